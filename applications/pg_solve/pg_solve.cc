@@ -1,0 +1,6 @@
+// placeholder, being written
+int
+main()
+{
+  return 0;
+}

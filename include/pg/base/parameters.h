@@ -1,0 +1,214 @@
+#ifndef pg_base_parameters_h
+#define pg_base_parameters_h
+
+#include <pg/base/global.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+#include <deal.II/base/function_parser.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pg
+{
+  /**
+   * The parameters of a pg run, one struct per top-level subsection of the
+   * parameter file (step-44 style). Every entry is documented where it is
+   * declared (source/base/parameters.cc); `pg_solve --print-parameters`
+   * prints that documentation.
+   */
+  namespace Parameters
+  {
+    /** Subsection "Geometry". */
+    struct Geometry
+    {
+      /** hyper rectangle | cook membrane | plate with hole | file */
+      std::string mesh;
+      std::vector<double>       lower_corner;
+      std::vector<double>       upper_corner;
+      std::vector<unsigned int> subdivisions;
+      /** Plate with hole: edge length L and hole radius R (length units). */
+      double       plate_size;
+      double       hole_radius;
+      std::string  file_name;
+      unsigned int global_refinement;
+      /** Interior vertices move by up to this fraction of the local spacing. */
+      double       distortion;
+      unsigned int random_seed;
+      /** all | none | material ids a,b | box x0,y0 : x1,y1 | ball cx,cy : r */
+      std::string meshfree_region;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** Subsection "Discretization". */
+    struct Discretization
+    {
+      /** The dissertation's formulation code (Table 7.1), or FEM. */
+      std::string formulation;
+      /** MTE1 | MLS1 | WLS1 | WTE1 */
+      std::string shape_functions;
+      /** delta = factor x local particle spacing. */
+      double       horizon_factor;
+      /** > 0: the N nearest particles instead of a horizon. */
+      unsigned int nearest_neighbours;
+      /** omega = |dX|^(-2n). */
+      double weight_exponent;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** Subsection "Material". */
+    struct Material
+    {
+      /** linear elastic | saint venant kirchhoff | neo-Hooke */
+      std::string model;
+      double      youngs_modulus;
+      double      poissons_ratio;
+      double      density;
+      /** strain | stress (2-D only) */
+      std::string plane;
+
+      /** Lame's first parameter of the 3-D material. */
+      double
+      lambda() const;
+      /** Shear modulus. */
+      double
+      mu() const;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** Subsection "Boundary conditions" (the functions are in AllParameters). */
+    struct BoundaryConditions
+    {
+      /** Boundary id and component mask (x, y, z) of each Dirichlet part. */
+      std::vector<std::pair<types::boundary_id, std::vector<bool>>> dirichlet;
+      std::vector<types::boundary_id>                               symmetry;
+      std::vector<types::boundary_id>                               neumann;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm, const unsigned int dim);
+    };
+
+    /** Subsection "Loading". */
+    struct Loading
+    {
+      unsigned int load_steps;
+      unsigned int maximum_step_cuts;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** Subsection "Newton". */
+    struct Newton
+    {
+      unsigned int maximum_iterations;
+      double       relative_tolerance;
+      double       absolute_tolerance;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** Subsection "Linear solver". */
+    struct LinearSolver
+    {
+      /** direct | cg | gmres */
+      std::string type;
+      double      tolerance;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** Subsection "Output". */
+    struct Output
+    {
+      std::string directory;
+      bool        vtu;
+      /** Named reference points, each with dim coordinates. */
+      std::vector<std::pair<std::string, std::vector<double>>> points;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm, const unsigned int dim);
+    };
+
+    /**
+     * All parameters of a run in @p dim dimensions, including the parsed
+     * functions of the boundary conditions and of the exact solution. The
+     * functions take the variables x, y[, z] and t, where t is the load
+     * factor that runs from 0 to 1.
+     */
+    template <int dim>
+    struct AllParameters
+    {
+      AllParameters();
+
+      unsigned int       dimension;
+      Geometry           geometry;
+      Discretization     discretization;
+      Material           material;
+      BoundaryConditions boundary_conditions;
+      Loading            loading;
+      Newton             newton;
+      LinearSolver       linear_solver;
+      Output             output;
+
+      /** Dirichlet values u(X, t) (dim components). */
+      Functions::ParsedFunction<dim> prescribed_displacement;
+      /** Dead first Piola traction per reference area (dim components). */
+      Functions::ParsedFunction<dim> traction;
+      /** Body force per reference volume, rho_0 b (dim components). */
+      Functions::ParsedFunction<dim> body_force;
+      /** Exact displacement for error norms (dim components). */
+      Functions::ParsedFunction<dim> exact_solution;
+      /**
+       * Exact displacement gradient, row-major du_i/dX_j (dim*dim
+       * components), or nullptr when 'Gradient expression' is empty (then
+       * the gradient comes from finite differences of the exact solution).
+       */
+      std::unique_ptr<FunctionParser<dim>> exact_gradient;
+      bool                                 compute_errors;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /**
+     * Read 'set Dimension' from @p filename, skipping every other entry.
+     * Throws with a clear message if the file cannot be read.
+     */
+    unsigned int
+    read_dimension(const std::string &filename);
+  } // namespace Parameters
+} // namespace pg
+
+#endif

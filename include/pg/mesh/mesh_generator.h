@@ -1,0 +1,39 @@
+#ifndef pg_mesh_mesh_generator_h
+#define pg_mesh_mesh_generator_h
+
+#include <pg/base/global.h>
+#include <pg/base/parameters.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <vector>
+
+namespace pg
+{
+  namespace Mesh
+  {
+    /**
+     * Fill the empty @p triangulation from subsection 'Geometry': the base
+     * mesh with its boundary ids (and manifolds for curved boundaries), then
+     * 'Global refinement', then 'Distortion' (reproducible by 'Random seed').
+     * Throws with a message that names the entry on bad input (unreadable
+     * file, unsupported dimension, ...).
+     */
+    template <int dim>
+    void
+    create_mesh(const Parameters::Geometry &parameters,
+                Triangulation<dim>         &triangulation);
+
+    /**
+     * Which active cells are meshfree, indexed by active_cell_index(), from
+     * 'Meshfree region' in subsection 'Geometry'. Throws on a malformed
+     * region description, naming the entry.
+     */
+    template <int dim>
+    std::vector<bool>
+    mark_meshfree_cells(const Parameters::Geometry &parameters,
+                        const Triangulation<dim>   &triangulation);
+  } // namespace Mesh
+} // namespace pg
+
+#endif

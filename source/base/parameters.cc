@@ -1,0 +1,745 @@
+#include <pg/base/exceptions.h>
+#include <pg/base/parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace pg
+{
+  namespace Parameters
+  {
+    namespace
+    {
+      /** "a, b, c" -> {a, b, c} with a clear message on a bad number. */
+      std::vector<double>
+      parse_doubles(const std::string &text, const std::string &entry)
+      {
+        std::vector<double> values;
+        for (const std::string &word :
+             Utilities::split_string_list(text, ','))
+          {
+            try
+              {
+                values.push_back(Utilities::string_to_double(word));
+              }
+            catch (...)
+              {
+                AssertThrow(false,
+                            ExcBadParameter(entry,
+                                            text,
+                                            "it must be a comma-separated "
+                                            "list of numbers."));
+              }
+          }
+        return values;
+      }
+
+
+
+      std::vector<types::boundary_id>
+      parse_ids(const std::string &text, const std::string &entry)
+      {
+        std::vector<types::boundary_id> ids;
+        for (const std::string &word :
+             Utilities::split_string_list(text, ','))
+          {
+            const int id = Utilities::string_to_int(word);
+            AssertThrow(id >= 0 && id < 255,
+                        ExcBadParameter(entry,
+                                        text,
+                                        "boundary ids must be integers "
+                                        "between 0 and 254."));
+            ids.push_back(static_cast<types::boundary_id>(id));
+          }
+        return ids;
+      }
+    } // namespace
+
+
+
+    void
+    Geometry::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      {
+        prm.declare_entry(
+          "Mesh",
+          "hyper rectangle",
+          Patterns::Selection("hyper rectangle|cook membrane|plate with hole|"
+                              "file"),
+          "The mesh. 'hyper rectangle': the box between 'Lower corner' and "
+          "'Upper corner' with colorized boundary ids 0..2*dim-1 (0: x=min, "
+          "1: x=max, 2: y=min, 3: y=max, 4: z=min, 5: z=max). 'cook "
+          "membrane': the 48 x 44/16 tapered panel (2-D), ids 0 clamped left "
+          "edge, 1 loaded right edge, 2 bottom, 3 top. 'plate with hole': the "
+          "quarter [0,L]^2 of a square plate minus the disk of radius R at "
+          "the origin (2-D), ids 0 hole, 1 x=0, 2 y=0, 3 x=L, 4 y=L. 'file': "
+          "read 'File name'.");
+        prm.declare_entry("Lower corner",
+                          "0, 0",
+                          Patterns::List(Patterns::Double()),
+                          "Hyper rectangle: lower corner, dim coordinates. "
+                          "Units: length.");
+        prm.declare_entry("Upper corner",
+                          "1, 1",
+                          Patterns::List(Patterns::Double()),
+                          "Hyper rectangle: upper corner, dim coordinates. "
+                          "Units: length.");
+        prm.declare_entry("Subdivisions",
+                          "1, 1",
+                          Patterns::List(Patterns::Integer(1)),
+                          "Cells per direction before global refinement "
+                          "(hyper rectangle and cook membrane); one value is "
+                          "used for every direction.");
+        prm.declare_entry("Plate size",
+                          "4",
+                          Patterns::Double(0.),
+                          "Plate with hole: edge length L of the quarter "
+                          "plate. Units: length.");
+        prm.declare_entry("Hole radius",
+                          "1",
+                          Patterns::Double(0.),
+                          "Plate with hole: hole radius R < L. Units: "
+                          "length.");
+        prm.declare_entry("File name",
+                          "",
+                          Patterns::Anything(),
+                          "Mesh file for 'Mesh = file': Gmsh (.msh), Abaqus "
+                          "(.inp) or UCD (.ucd), read with deal.II's GridIn. "
+                          "Relative paths start in the working directory.");
+        prm.declare_entry("Global refinement",
+                          "0",
+                          Patterns::Integer(0, 12),
+                          "Number of uniform refinements of the mesh.");
+        prm.declare_entry("Distortion",
+                          "0",
+                          Patterns::Double(0., 0.45),
+                          "Every interior vertex is moved randomly by up to "
+                          "this fraction of its local vertex spacing (after "
+                          "refinement). 0 keeps the mesh regular.");
+        prm.declare_entry("Random seed",
+                          "0",
+                          Patterns::Integer(0),
+                          "Seed of the random distortion; the same seed "
+                          "gives the same mesh.");
+        prm.declare_entry(
+          "Meshfree region",
+          "all",
+          Patterns::Anything(),
+          "Which cells are meshfree (their vertices become particles); the "
+          "others are Q1 finite elements. 'all', 'none', 'material ids 1,2', "
+          "'box x0,y0 : x1,y1' or 'ball cx,cy : r'. A cell is meshfree if its "
+          "centre lies inside the box or ball. Ignored for 'Formulation = "
+          "FEM'.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Geometry::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      {
+        mesh         = prm.get("Mesh");
+        lower_corner = parse_doubles(prm.get("Lower corner"),
+                                     "Geometry/Lower corner");
+        upper_corner = parse_doubles(prm.get("Upper corner"),
+                                     "Geometry/Upper corner");
+        subdivisions.clear();
+        for (const double s :
+             parse_doubles(prm.get("Subdivisions"), "Geometry/Subdivisions"))
+          subdivisions.push_back(static_cast<unsigned int>(s));
+        plate_size        = prm.get_double("Plate size");
+        hole_radius       = prm.get_double("Hole radius");
+        file_name         = prm.get("File name");
+        global_refinement = prm.get_integer("Global refinement");
+        distortion        = prm.get_double("Distortion");
+        random_seed       = prm.get_integer("Random seed");
+        meshfree_region   = prm.get("Meshfree region");
+      }
+      prm.leave_subsection();
+
+      AssertThrow(mesh != "plate with hole" || hole_radius < plate_size,
+                  ExcBadParameter("Geometry/Hole radius",
+                                  std::to_string(hole_radius),
+                                  "it must be smaller than 'Plate size' "
+                                  "in subsection 'Geometry'."));
+      AssertThrow(mesh != "file" || !file_name.empty(),
+                  ExcBadParameter("Geometry/File name",
+                                  file_name,
+                                  "'Mesh = file' needs the name of a mesh "
+                                  "file."));
+    }
+
+
+
+    void
+    Discretization::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Discretization");
+      {
+        prm.declare_entry(
+          "Formulation",
+          "BCPBG Unl TL",
+          Patterns::Anything(),
+          "The method, as the dissertation's code (Table 7.1), or FEM. "
+          "Available: [BC]PBG | [BC]PPG (= PPG1, eq. 4.21) | [BC]PPG2 (eq. "
+          "4.22), with Unl (shape functions at every family member) or U1 "
+          "(PBG at the master only: classical correspondence), and TL. BC "
+          "switches the bond correction (eq. 5.55) on. FEM uses Q1 elements "
+          "everywhere. Example: 'BCPBG Unl TL'.");
+        prm.declare_entry("Shape functions",
+                          "MTE1",
+                          Patterns::Selection("MTE1|MLS1|WLS1|WTE1"),
+                          "The first-order base of Unl/U1 (Table 5.1): MTE1 "
+                          "(moving Taylor), MLS1 (moving least squares), "
+                          "WLS1 (weighted least squares), WTE1 (weighted "
+                          "Taylor). At the master MTE1 equals WTE1, so U1 "
+                          "with MTE1 is WTE1: classical correspondence.");
+        prm.declare_entry("Horizon factor",
+                          "2.51",
+                          Patterns::Double(0.),
+                          "Horizon delta = factor x local particle spacing "
+                          "(mean length of the meshfree cell edges at the "
+                          "particle). Typical values 1.51 ... 3.01.");
+        prm.declare_entry("Nearest neighbours",
+                          "0",
+                          Patterns::Integer(0),
+                          "If > 0, a family is its master plus the N nearest "
+                          "particles, completed to pairwise families; "
+                          "'Horizon factor' is then ignored.");
+        prm.declare_entry("Weight exponent",
+                          "1",
+                          Patterns::Double(0.),
+                          "n in the weight omega = |dX|^(-2n) (eqs. 4.5, "
+                          "5.42).");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Discretization::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Discretization");
+      {
+        formulation        = prm.get("Formulation");
+        shape_functions    = prm.get("Shape functions");
+        horizon_factor     = prm.get_double("Horizon factor");
+        nearest_neighbours = prm.get_integer("Nearest neighbours");
+        weight_exponent    = prm.get_double("Weight exponent");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    double
+    Material::lambda() const
+    {
+      return youngs_modulus * poissons_ratio /
+             ((1. + poissons_ratio) * (1. - 2. * poissons_ratio));
+    }
+
+
+
+    double
+    Material::mu() const
+    {
+      return youngs_modulus / (2. * (1. + poissons_ratio));
+    }
+
+
+
+    void
+    Material::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      {
+        prm.declare_entry("Model",
+                          "neo-Hooke",
+                          Patterns::Selection("linear elastic|saint venant "
+                                              "kirchhoff|neo-Hooke"),
+                          "'linear elastic' (small strain, P = sigma(eps)), "
+                          "'saint venant kirchhoff' (S = lambda tr(E) 1 + 2 "
+                          "mu E, eq. 2.45) or 'neo-Hooke' (compressible, eq. "
+                          "2.42).");
+        prm.declare_entry("Young's modulus",
+                          "1",
+                          Patterns::Double(0.),
+                          "E. Units: force per area.");
+        prm.declare_entry("Poisson's ratio",
+                          "0.3",
+                          Patterns::Double(-1., 0.5),
+                          "nu, -1 < nu < 0.5.");
+        prm.declare_entry("Density",
+                          "1",
+                          Patterns::Double(0.),
+                          "Reference density rho_0. Units: mass per volume.");
+        prm.declare_entry("Plane",
+                          "strain",
+                          Patterns::Selection("strain|stress"),
+                          "2-D only: plane strain or plane stress (plane "
+                          "stress for 'linear elastic' and 'saint venant "
+                          "kirchhoff').");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Material::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      {
+        model          = prm.get("Model");
+        youngs_modulus = prm.get_double("Young's modulus");
+        poissons_ratio = prm.get_double("Poisson's ratio");
+        density        = prm.get_double("Density");
+        plane          = prm.get("Plane");
+      }
+      prm.leave_subsection();
+
+      AssertThrow(youngs_modulus > 0.,
+                  ExcBadParameter("Material/Young's modulus",
+                                  std::to_string(youngs_modulus),
+                                  "it must be positive."));
+      AssertThrow(poissons_ratio > -1. && poissons_ratio < 0.5,
+                  ExcBadParameter(
+                    "Material/Poisson's ratio",
+                    std::to_string(poissons_ratio),
+                    "it must lie in (-1, 0.5): at 0.5 the material is "
+                    "incompressible, lambda is infinite, and the "
+                    "displacement formulations lock. Use e.g. 0.499 or a "
+                    "mixed formulation (not yet available)."));
+      AssertThrow(plane == "strain" || model != "neo-Hooke",
+                  ExcBadParameter("Material/Plane",
+                                  plane,
+                                  "plane stress is not yet available for "
+                                  "'Model = neo-Hooke'; use 'Plane = "
+                                  "strain'."));
+    }
+
+
+
+    void
+    BoundaryConditions::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      {
+        prm.declare_entry(
+          "Dirichlet",
+          "",
+          Patterns::Anything(),
+          "Comma-separated 'boundary id: components' items, e.g. '0: xy, 3: "
+          "y'. The listed displacement components on that boundary take the "
+          "values of subsection 'Prescribed displacement'.");
+        prm.declare_entry("Symmetry",
+                          "",
+                          Patterns::Anything(),
+                          "Boundary ids of planar boundaries with zero "
+                          "normal displacement, e.g. '1, 2'.");
+        prm.declare_entry("Neumann",
+                          "",
+                          Patterns::Anything(),
+                          "Boundary ids loaded by the dead traction of "
+                          "subsection 'Traction' (first Piola traction per "
+                          "reference area).");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    BoundaryConditions::parse_parameters(ParameterHandler  &prm,
+                                         const unsigned int dim)
+    {
+      prm.enter_subsection("Boundary conditions");
+      {
+        dirichlet.clear();
+        const std::string text = prm.get("Dirichlet");
+        for (const std::string &item : Utilities::split_string_list(text, ','))
+          {
+            const std::vector<std::string> parts =
+              Utilities::split_string_list(item, ':');
+            AssertThrow(parts.size() == 2,
+                        ExcBadParameter("Boundary conditions/Dirichlet",
+                                        text,
+                                        "each item must read 'boundary id: "
+                                        "components', e.g. '0: xy'."));
+            const types::boundary_id id =
+              parse_ids(parts[0], "Boundary conditions/Dirichlet")[0];
+            std::vector<bool> mask(dim, false);
+            for (const char c : parts[1])
+              {
+                const unsigned int component =
+                  (c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : 99);
+                AssertThrow(component < dim,
+                            ExcBadParameter("Boundary conditions/Dirichlet",
+                                            text,
+                                            "components are written with the "
+                                            "letters x, y" +
+                                              std::string(dim == 3 ? ", z" :
+                                                                     "") +
+                                              ", e.g. '0: xy'."));
+                mask[component] = true;
+              }
+            dirichlet.emplace_back(id, mask);
+          }
+        symmetry =
+          parse_ids(prm.get("Symmetry"), "Boundary conditions/Symmetry");
+        neumann = parse_ids(prm.get("Neumann"), "Boundary conditions/Neumann");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Loading::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loading");
+      {
+        prm.declare_entry("Load steps",
+                          "1",
+                          Patterns::Integer(1),
+                          "Number of equal load steps; the load factor t "
+                          "runs from 0 to 1.");
+        prm.declare_entry("Maximum step cuts",
+                          "5",
+                          Patterns::Integer(0, 30),
+                          "A load step whose Newton iteration diverges is "
+                          "halved and repeated, at most this often.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Loading::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loading");
+      {
+        load_steps        = prm.get_integer("Load steps");
+        maximum_step_cuts = prm.get_integer("Maximum step cuts");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Newton::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Newton");
+      {
+        prm.declare_entry("Maximum iterations",
+                          "20",
+                          Patterns::Integer(1),
+                          "Newton iterations per load step before the step "
+                          "counts as diverged.");
+        prm.declare_entry("Relative tolerance",
+                          "1e-10",
+                          Patterns::Double(0.),
+                          "Converged when |R| <= this x |R| of the first "
+                          "iteration of the step, ...");
+        prm.declare_entry("Absolute tolerance",
+                          "1e-12",
+                          Patterns::Double(0.),
+                          "... or when |R| <= this (force units).");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Newton::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Newton");
+      {
+        maximum_iterations = prm.get_integer("Maximum iterations");
+        relative_tolerance = prm.get_double("Relative tolerance");
+        absolute_tolerance = prm.get_double("Absolute tolerance");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    LinearSolver::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      {
+        prm.declare_entry("Type",
+                          "direct",
+                          Patterns::Selection("direct|cg|gmres"),
+                          "direct: Trilinos Amesos KLU. cg (symmetric "
+                          "tangents only: FEM and PBG with hyperelastic "
+                          "materials) or gmres, both preconditioned by "
+                          "Trilinos ML algebraic multigrid.");
+        prm.declare_entry("Tolerance",
+                          "1e-10",
+                          Patterns::Double(0.),
+                          "Relative residual reduction of cg and gmres.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    LinearSolver::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      {
+        type      = prm.get("Type");
+        tolerance = prm.get_double("Tolerance");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Output::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      {
+        prm.declare_entry("Directory",
+                          "results",
+                          Patterns::Anything(),
+                          "Where VTU/PVD files, statistics.txt, timing.txt "
+                          "and summary.json go. Created if missing.");
+        prm.declare_entry("VTU",
+                          "true",
+                          Patterns::Bool(),
+                          "Write VTU/PVD files for ParaView after every "
+                          "load step.");
+        prm.declare_entry("Points",
+                          "",
+                          Patterns::Anything(),
+                          "Named reference points whose displacement is "
+                          "reported: 'name: x, y[, z]; name: ...', e.g. "
+                          "'tip: 48, 60'.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Output::parse_parameters(ParameterHandler &prm, const unsigned int dim)
+    {
+      prm.enter_subsection("Output");
+      {
+        directory = prm.get("Directory");
+        vtu       = prm.get_bool("VTU");
+        points.clear();
+        const std::string text = prm.get("Points");
+        for (const std::string &item : Utilities::split_string_list(text, ';'))
+          {
+            const std::vector<std::string> parts =
+              Utilities::split_string_list(item, ':');
+            AssertThrow(parts.size() == 2,
+                        ExcBadParameter("Output/Points",
+                                        text,
+                                        "each point must read 'name: x, y'."));
+            const std::vector<double> coordinates =
+              parse_doubles(parts[1], "Output/Points");
+            AssertThrow(coordinates.size() == dim,
+                        ExcBadParameter("Output/Points",
+                                        text,
+                                        "each point needs " +
+                                          std::to_string(dim) +
+                                          " coordinates."));
+            points.emplace_back(parts[0], coordinates);
+          }
+      }
+      prm.leave_subsection();
+      AssertThrow(!directory.empty(),
+                  ExcBadParameter("Output/Directory",
+                                  directory,
+                                  "it must name a directory."));
+    }
+
+
+
+    template <int dim>
+    AllParameters<dim>::AllParameters()
+      : dimension(dim)
+      , prescribed_displacement(dim)
+      , traction(dim)
+      , body_force(dim)
+      , exact_solution(dim)
+      , compute_errors(false)
+    {}
+
+
+
+    template <int dim>
+    void
+    AllParameters<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Dimension",
+                        "2",
+                        Patterns::Integer(2, 3),
+                        "Space dimension: 2 or 3. Read before everything "
+                        "else.");
+      Geometry::declare_parameters(prm);
+      Discretization::declare_parameters(prm);
+      Material::declare_parameters(prm);
+      BoundaryConditions::declare_parameters(prm);
+      prm.enter_subsection("Boundary conditions");
+      {
+        prm.enter_subsection("Prescribed displacement");
+        Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
+        prm.leave_subsection();
+        prm.enter_subsection("Traction");
+        Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
+        prm.leave_subsection();
+        prm.enter_subsection("Body force");
+        Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+      prm.enter_subsection("Exact solution");
+      {
+        Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
+        prm.declare_entry("Compute errors",
+                          "false",
+                          Patterns::Bool(),
+                          "Compute the L2 and H1 error norms (eq. 7.3) "
+                          "against the function of this subsection at every "
+                          "load step and write them to summary.json.");
+        prm.declare_entry("Gradient expression",
+                          "",
+                          Patterns::Anything(),
+                          "Optional exact gradient du_i/dX_j, dim*dim "
+                          "expressions separated by ';' in row-major order, "
+                          "with the variables and constants of this "
+                          "subsection. Empty: finite differences of the "
+                          "exact solution (accurate to about 1e-8 only).");
+      }
+      prm.leave_subsection();
+      Loading::declare_parameters(prm);
+      Newton::declare_parameters(prm);
+      LinearSolver::declare_parameters(prm);
+      Output::declare_parameters(prm);
+    }
+
+
+
+    template <int dim>
+    void
+    AllParameters<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      dimension = prm.get_integer("Dimension");
+      AssertThrow(dimension == dim, ExcInternalError());
+      geometry.parse_parameters(prm);
+      discretization.parse_parameters(prm);
+      material.parse_parameters(prm);
+      boundary_conditions.parse_parameters(prm, dim);
+      prm.enter_subsection("Boundary conditions");
+      {
+        prm.enter_subsection("Prescribed displacement");
+        prescribed_displacement.parse_parameters(prm);
+        prm.leave_subsection();
+        prm.enter_subsection("Traction");
+        traction.parse_parameters(prm);
+        prm.leave_subsection();
+        prm.enter_subsection("Body force");
+        body_force.parse_parameters(prm);
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+      prm.enter_subsection("Exact solution");
+      {
+        exact_solution.parse_parameters(prm);
+        compute_errors = prm.get_bool("Compute errors");
+        const std::string gradient = prm.get("Gradient expression");
+        exact_gradient.reset();
+        if (!gradient.empty())
+          {
+            exact_gradient = std::make_unique<FunctionParser<dim>>(dim * dim);
+            std::map<std::string, double> constants;
+            for (const std::string &c :
+                 Utilities::split_string_list(prm.get("Function constants"),
+                                              ','))
+              {
+                const auto parts = Utilities::split_string_list(c, '=');
+                AssertThrow(parts.size() == 2,
+                            ExcBadParameter(
+                              "Exact solution/Function constants",
+                              prm.get("Function constants"),
+                              "constants must read 'name=value'."));
+                constants[parts[0]] = Utilities::string_to_double(parts[1]);
+              }
+            const std::vector<std::string> expressions =
+              Utilities::split_string_list(gradient, ';');
+            AssertThrow(expressions.size() == dim * dim,
+                        ExcBadParameter("Exact solution/Gradient expression",
+                                        gradient,
+                                        "it needs dim*dim = " +
+                                          std::to_string(dim * dim) +
+                                          " expressions separated by ';'."));
+            exact_gradient->initialize(prm.get("Variable names"),
+                                       expressions,
+                                       constants,
+                                       true);
+          }
+      }
+      prm.leave_subsection();
+      loading.parse_parameters(prm);
+      newton.parse_parameters(prm);
+      linear_solver.parse_parameters(prm);
+      output.parse_parameters(prm, dim);
+
+      AssertThrow(geometry.lower_corner.size() == dim &&
+                    geometry.upper_corner.size() == dim,
+                  ExcBadParameter("Geometry/Lower corner",
+                                  "",
+                                  "'Lower corner' and 'Upper corner' need " +
+                                    std::to_string(dim) + " coordinates."));
+      AssertThrow(geometry.subdivisions.size() == 1 ||
+                    geometry.subdivisions.size() == dim,
+                  ExcBadParameter("Geometry/Subdivisions",
+                                  "",
+                                  "it needs 1 or " + std::to_string(dim) +
+                                    " values."));
+      AssertThrow(dim == 2 || material.plane == "strain",
+                  ExcBadParameter("Material/Plane",
+                                  material.plane,
+                                  "plane stress exists in 2-D only."));
+    }
+
+
+
+    unsigned int
+    read_dimension(const std::string &filename)
+    {
+      std::ifstream file(filename);
+      AssertThrow(file,
+                  ExcMessage("The parameter file <" + filename +
+                             "> cannot be read. Check the path."));
+      ParameterHandler prm;
+      prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3));
+      prm.parse_input(filename, "", true);
+      return prm.get_integer("Dimension");
+    }
+
+
+
+    template struct AllParameters<2>;
+    template struct AllParameters<3>;
+  } // namespace Parameters
+} // namespace pg

@@ -1,0 +1,52 @@
+#ifndef pg_tests_h
+#define pg_tests_h
+
+// Our own small test helper (not deal.II's tests.h): a log file named
+// 'output' that deal.II's test driver compares with numdiff, a fixed thread
+// count, and printing helpers that print only reproducible digits.
+
+#include <deal.II/base/logstream.h>
+#include <deal.II/base/multithread_info.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <string>
+
+using namespace dealii;
+
+namespace pg_tests
+{
+  inline std::ofstream logfile;
+}
+
+inline void
+initlog()
+{
+  pg_tests::logfile.open("output");
+  deallog.attach(pg_tests::logfile);
+  deallog.depth_console(0);
+  MultithreadInfo::set_thread_limit(1);
+}
+
+/** "name: yes" if |value| <= bound, else "name: NO (value)". */
+inline void
+print_bound(const std::string &name, const double value, const double bound)
+{
+  if (std::abs(value) <= bound)
+    deallog << name << " <= " << bound << ": yes" << std::endl;
+  else
+    deallog << name << " <= " << bound << ": NO (" << value << ")"
+            << std::endl;
+}
+
+/** @p value with @p digits significant digits. */
+inline void
+print_rounded(const std::string &name, const double value, const int digits)
+{
+  std::ostringstream s;
+  s << std::setprecision(digits) << value;
+  deallog << name << " = " << s.str() << std::endl;
+}
+
+#endif
