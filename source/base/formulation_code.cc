@@ -1,1 +1,153 @@
-// placeholder, being written
+#include <pg/base/formulation_code.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+namespace pg
+{
+  namespace
+  {
+    const std::string valid_parts =
+      "Valid codes read '[BC]<method> <points> [TL]' with <method> = PBG, "
+      "PPG (= PPG1), PPG1 or PPG2 and <points> = Unl or U1 (U1 with PBG "
+      "only), e.g. 'BCPBG Unl TL', 'PPG Unl', 'PBG U1'; or 'FEM'.";
+
+
+
+    [[noreturn]] void
+    reject(const std::string &code, const std::string &reason)
+    {
+      AssertThrow(false,
+                  ExcMessage("The entry 'Formulation' in subsection "
+                             "'Discretization' has the value <" +
+                             code + ">: " + reason + " " + valid_parts));
+      std::abort();
+    }
+
+
+
+    bool
+    starts_with(const std::string &text, const std::string &prefix)
+    {
+      return text.compare(0, prefix.size(), prefix) == 0;
+    }
+  } // namespace
+
+
+
+  std::string
+  FormulationCode::method_name() const
+  {
+    switch (method)
+      {
+        case Method::fem:
+          return "FEM";
+        case Method::pbg:
+          return "PBG";
+        case Method::ppg1:
+          return "PPG";
+        case Method::ppg2:
+          return "PPG2";
+      }
+    Assert(false, ExcInternalError());
+    return "";
+  }
+
+
+
+  FormulationCode
+  parse_formulation_code(const std::string &code)
+  {
+    std::vector<std::string> words;
+    for (const std::string &w : Utilities::split_string_list(code, ' '))
+      if (!w.empty())
+        words.push_back(w);
+    if (words.empty())
+      reject(code, "it is empty.");
+
+    FormulationCode result;
+    result.text.clear();
+    for (const std::string &w : words)
+      result.text += (result.text.empty() ? "" : " ") + w;
+    result.bond_correction = false;
+    result.points          = FormulationCode::Points::unl;
+
+    // The first word: corrections, then the method.
+    std::string head = words[0];
+    for (;;)
+      {
+        if (starts_with(head, "VC2") || starts_with(head, "VC"))
+          reject(code,
+                 "the variational-consistency correction (VC, VC2) is not "
+                 "yet available.");
+        else if (starts_with(head, "BC"))
+          {
+            if (result.bond_correction)
+              reject(code, "BC appears twice.");
+            result.bond_correction = true;
+            head                   = head.substr(2);
+          }
+        else
+          break;
+      }
+    if (head == "PBG")
+      result.method = FormulationCode::Method::pbg;
+    else if (head == "PPG" || head == "PPG1")
+      result.method = FormulationCode::Method::ppg1;
+    else if (head == "PPG2")
+      result.method = FormulationCode::Method::ppg2;
+    else if (head == "FEM")
+      {
+        result.method = FormulationCode::Method::fem;
+        if (result.bond_correction)
+          reject(code, "FEM takes no corrections.");
+        if (words.size() > 1)
+          reject(code, "FEM takes no further parts.");
+        return result;
+      }
+    else
+      reject(code, "the method <" + head + "> is unknown.");
+
+    bool have_points = false, have_reference = false;
+    for (unsigned int i = 1; i < words.size(); ++i)
+      {
+        const std::string &w = words[i];
+        if (w == "Unl" || w == "U1")
+          {
+            if (have_points)
+              reject(code, "it names two formulations.");
+            have_points   = true;
+            result.points = (w == "Unl" ? FormulationCode::Points::unl :
+                                          FormulationCode::Points::u1);
+          }
+        else if (w == "TL")
+          {
+            if (have_reference)
+              reject(code, "it names the reference configuration twice.");
+            have_reference = true;
+          }
+        else if (w == "UL")
+          reject(code,
+                 "the updated Lagrangian form (UL) is not yet available; "
+                 "use TL.");
+        else if (w.size() >= 2 && w[0] == 'V' && w[1] >= '1' && w[1] <= '5')
+          reject(code,
+                 "the correction function <" + w +
+                   "> belongs to the VC correction, which is not yet "
+                   "available.");
+        else if (w == "U2" || w == "UnlP0" || w == "IUnlP0" || w == "U2P1" ||
+                 w == "U2P1C" || w == "Unl+P1C" || w == "U1SUnl" ||
+                 w == "U1SIG")
+          reject(code, "the formulation <" + w + "> is not yet available.");
+        else
+          reject(code, "the part <" + w + "> is unknown.");
+      }
+
+    if (result.points == FormulationCode::Points::u1 &&
+        result.method != FormulationCode::Method::pbg)
+      reject(code,
+             "U1 (one evaluation point per family) is the underintegrated "
+             "PBG; use 'PBG U1'.");
+    return result;
+  }
+} // namespace pg

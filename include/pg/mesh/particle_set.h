@@ -1,0 +1,90 @@
+#ifndef pg_mesh_particle_set_h
+#define pg_mesh_particle_set_h
+
+#include <pg/base/global.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+
+#include <array>
+#include <map>
+#include <vector>
+
+namespace pg
+{
+  /**
+   * The particles: the vertices of the meshfree cells ("collocated FE
+   * nodes", pg-methods.md section 5.1). A particle's displacement is the Q1
+   * nodal displacement of its vertex, so particles share their DoFs with
+   * the Q1 cells at the FE/meshfree interface (architecture.md section 1).
+   *
+   * Particles are numbered in the order of their vertex indices, which is
+   * the same on every MPI rank.
+   */
+  template <int dim>
+  class ParticleSet
+  {
+  public:
+    /**
+     * Collect the particles of the cells marked in @p meshfree (indexed by
+     * active_cell_index) of @p dof_handler, whose finite element must be
+     * FESystem(FE_Q(1), dim). Computes the lumped volumes
+     * V^k = sum over meshfree cells of the integral of N_k, the local
+     * spacing, and the geometric area vectors of the boundary parts.
+     */
+    void
+    reinit(const DoFHandler<dim> &dof_handler, const std::vector<bool> &meshfree);
+
+    unsigned int
+    n_particles() const;
+
+    /** Reference position X^k. */
+    const Point<dim> &
+    position(const unsigned int k) const;
+
+    /** Lumped volume V^k (volume units). */
+    double
+    volume(const unsigned int k) const;
+
+    /** Mean length of the meshfree cell edges at particle k. */
+    double
+    spacing(const unsigned int k) const;
+
+    /** The global DoF of component @p c of particle k. */
+    types::global_dof_index
+    dof(const unsigned int k, const unsigned int c) const;
+
+    /** Global vertex index of particle k. */
+    unsigned int
+    vertex(const unsigned int k) const;
+
+    /**
+     * Geometric area vectors of particle k, one per boundary id:
+     * a^k_b = integral of N_k n over the meshfree faces with id b.
+     * Empty for interior particles.
+     */
+    const std::map<types::boundary_id, Tensor<1, dim>> &
+    boundary_area_vectors(const unsigned int k) const;
+
+    /** Whether particle k is also a vertex of a finite element cell. */
+    bool
+    on_interface(const unsigned int k) const;
+
+    /** Sum of all particle volumes. */
+    double
+    total_volume() const;
+
+  private:
+    std::vector<Point<dim>>                                    positions;
+    std::vector<double>                                        volumes;
+    std::vector<double>                                        spacings;
+    std::vector<std::array<types::global_dof_index, dim>>      dofs;
+    std::vector<unsigned int>                                  vertices;
+    std::vector<std::map<types::boundary_id, Tensor<1, dim>>> area_vectors;
+    std::vector<bool>                                          interface;
+  };
+} // namespace pg
+
+#endif

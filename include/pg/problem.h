@@ -1,0 +1,100 @@
+#ifndef pg_problem_h
+#define pg_problem_h
+
+#include <pg/base/global.h>
+#include <pg/base/parameters.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/types.h>
+
+#include <map>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace pg
+{
+  /**
+   * What a run reports in summary.json (and what tests check).
+   */
+  struct RunSummary
+  {
+    unsigned int            dimension       = 0;
+    std::string             formulation;
+    unsigned int            n_particles     = 0;
+    unsigned int            n_fe_cells      = 0;
+    unsigned int            n_meshfree_cells = 0;
+    unsigned int            n_families      = 0;
+    types::global_dof_index n_dofs          = 0;
+    std::size_t             matrix_nonzeros = 0;
+    bool                    converged       = false;
+    unsigned int            load_steps      = 0;
+    unsigned int            newton_iterations = 0;
+    /** |R| of every Newton iteration of the last (sub)step. */
+    std::vector<double> newton_residuals_last_step;
+    /** name -> displacement at the final converged step. */
+    std::vector<std::pair<std::string, std::vector<double>>> points;
+    /** Dirichlet boundary id -> reaction force (f_int - f_ext). */
+    std::map<types::boundary_id, std::vector<double>> reactions;
+    bool   have_errors = false;
+    double L2 = 0, H1 = 0, L2_relative = 0, H1_relative = 0;
+    /** Seconds: setup, shape_functions, assembly, solve, total. */
+    std::map<std::string, double> timing;
+    /** Largest |d^k| at interior particles, divided by spacing^(dim-1). */
+    double max_interior_unit_stress_residual = 0;
+  };
+
+  /**
+   * A quasi-static, geometrically nonlinear problem on a mesh whose cells are
+   * Q1 finite elements or meshfree PG cells sharing their vertices
+   * (architecture.md section 3): setup, load stepping with Newton's method
+   * and the consistent tangent, output.
+   */
+  template <int dim>
+  class Problem
+  {
+  public:
+    /**
+     * @p out receives the progress report (printed on rank 0 only); it
+     * contains no wall times, so tests can compare it.
+     */
+    Problem(const Parameters::AllParameters<dim> &parameters,
+            const MPI_Comm                        mpi_communicator,
+            std::ostream                         &out);
+    ~Problem();
+
+    /**
+     * Run all load steps. Throws with a clear message on bad input or when
+     * a load step does not converge after 'Maximum step cuts' cuts; the
+     * files of the steps computed so far and summary.json stay on disk.
+     */
+    void
+    run();
+
+    const RunSummary &
+    summary() const;
+
+  private:
+    class Implementation;
+    std::unique_ptr<Implementation> implementation;
+  };
+
+  /**
+   * Declare all parameters of a @p dim dimensional run in @p prm.
+   */
+  template <int dim>
+  void
+  declare_all_parameters(ParameterHandler &prm);
+
+  /**
+   * What `pg_solve file.prm` does: read 'Dimension', parse the file, run.
+   * Returns the summary.
+   */
+  RunSummary
+  run_parameter_file(const std::string &filename,
+                     const MPI_Comm     mpi_communicator,
+                     std::ostream      &out);
+} // namespace pg
+
+#endif

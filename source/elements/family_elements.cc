@@ -1,0 +1,170 @@
+#include <pg/base/exceptions.h>
+#include <pg/elements/family_elements.h>
+
+#include <algorithm>
+#include <sstream>
+
+namespace pg
+{
+  template <int dim>
+  FamilyElements<dim>::FamilyElements(
+    const ParticleSet<dim>    &particles,
+    const FamilySet<dim>      &families,
+    const FormulationCode     &formulation,
+    const ShapeFunctions::Base base,
+    const double               weight_exponent)
+    : particles(particles)
+    , families(families)
+    , formulation(formulation)
+    , base(base)
+    , weight_exponent(weight_exponent)
+  {}
+
+
+
+  template <int dim>
+  ShapeFunctions::FamilyGeometry<dim>
+  FamilyElements<dim>::geometry(const unsigned int k) const
+  {
+    ShapeFunctions::FamilyGeometry<dim> g;
+    const auto                          members = families.members(k);
+    g.bonds.resize(members.size());
+    g.volumes.resize(members.size());
+    for (unsigned int i = 0; i < members.size(); ++i)
+      {
+        g.bonds[i] =
+          particles.position(members[i]) - particles.position(members[0]);
+        g.volumes[i] = particles.volume(members[i]);
+      }
+    g.weight_exponent = weight_exponent;
+    return g;
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyElements<dim>::checked_gradients(
+    const unsigned int                         k,
+    const ShapeFunctions::FamilyGeometry<dim> &geometry,
+    const unsigned int                         point,
+    std::vector<Tensor<1, dim>>               &g) const
+  {
+    const double cond =
+      ShapeFunctions::raw_gradients(base, geometry, point, g);
+    if (!(cond <= maximum_condition_number))
+      {
+        std::ostringstream where, detail;
+        where << "(" << particles.position(k) << ")";
+        detail << " (condition number " << cond << " > "
+               << maximum_condition_number << " at member "
+               << families.members(k)[point] << " at ("
+               << particles.position(families.members(k)[point]) << "))";
+        AssertThrow(false,
+                    ExcSingularFamily(k,
+                                      where.str(),
+                                      families.n_neighbours(k),
+                                      detail.str()));
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyElements<dim>::initialize()
+  {
+    master.resize(families.n_families());
+    for (unsigned int k = 0; k < families.n_families(); ++k)
+      {
+        checked_gradients(k, geometry(k), 0, master[k]);
+        ShapeFunctions::make_effective(master[k]);
+      }
+  }
+
+
+
+  template <int dim>
+  const std::vector<Tensor<1, dim>> &
+  FamilyElements<dim>::master_gradients(const unsigned int k) const
+  {
+    AssertIndexRange(k, master.size());
+    return master[k];
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyElements<dim>::build(const unsigned int    k,
+                             QuadratureTable<dim> &table) const
+  {
+    using Method = FormulationCode::Method;
+    const auto                          members = families.members(k);
+    const unsigned int                  n       = members.size();
+    const ShapeFunctions::FamilyGeometry<dim> geom = geometry(k);
+    std::vector<Tensor<1, dim>>         g;
+
+    // Effective trial gradients of family k at its member j.
+    const auto trial_at = [&](const unsigned int j) {
+      checked_gradients(k, geom, j, g);
+      if (formulation.bond_correction && j != 0)
+        ShapeFunctions::apply_bond_correction(geom, j, g);
+      ShapeFunctions::make_effective(g);
+    };
+
+    if (formulation.method == Method::pbg)
+      {
+        table.reinit(n, true);
+        double family_volume = 0;
+        for (const double v : geom.volumes)
+          family_volume += v;
+        if (formulation.points == FormulationCode::Points::u1)
+          table.add_point(geom.volumes[0], master[k]);
+        else
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              trial_at(j);
+              table.add_point(geom.volumes[0] * geom.volumes[j] /
+                                family_volume,
+                              g);
+            }
+        return;
+      }
+
+    Assert(formulation.method == Method::ppg1 ||
+             formulation.method == Method::ppg2,
+           ExcInternalError());
+    table.reinit(n, false);
+    for (unsigned int j = 1; j < n; ++j)
+      {
+        trial_at(j);
+        table.add_point(geom.volumes[j], g);
+        if (formulation.method == Method::ppg1)
+          {
+            // g^{jjk}: family j's master gradient for node k
+            const auto   family_j = families.members(members[j]);
+            const auto   found    = std::lower_bound(family_j.begin() + 1,
+                                                family_j.end(),
+                                                k);
+            Assert(found != family_j.end() && *found == k,
+                   ExcMessage("The families are not pairwise."));
+            const Tensor<1, dim> &t =
+              master[members[j]][found - family_j.begin()];
+            table.add_test_vector(0, t);
+            table.add_test_vector(j, -t);
+          }
+        else
+          {
+            const Tensor<1, dim> &t = master[k][j];
+            table.add_test_vector(j, t);
+            table.add_test_vector(0, -t);
+          }
+      }
+  }
+
+
+
+  template class FamilyElements<2>;
+  template class FamilyElements<3>;
+} // namespace pg

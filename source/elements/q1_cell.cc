@@ -1,0 +1,26 @@
+#include <pg/elements/q1_cell.h>
+
+namespace pg
+{
+  template <int dim>
+  void
+  fill_q1_table(const FEValues<dim> &fe_values, QuadratureTable<dim> &table)
+  {
+    const unsigned int n = fe_values.dofs_per_cell;
+    table.reinit(n, true);
+    std::vector<Tensor<1, dim>> row(n);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        for (unsigned int b = 0; b < n; ++b)
+          row[b] = fe_values.shape_grad(b, q);
+        table.add_point(fe_values.JxW(q), row);
+      }
+  }
+
+
+
+  template void
+  fill_q1_table<2>(const FEValues<2> &, QuadratureTable<2> &);
+  template void
+  fill_q1_table<3>(const FEValues<3> &, QuadratureTable<3> &);
+} // namespace pg

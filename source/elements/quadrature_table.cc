@@ -1,0 +1,207 @@
+#include <pg/elements/quadrature_table.h>
+
+namespace pg
+{
+  template <int dim>
+  void
+  QuadratureTable<dim>::reinit(const unsigned int n, const bool test_trial)
+  {
+    n_nodes       = n;
+    test_is_trial = test_trial;
+    weights.clear();
+    trial.clear();
+    test_offsets.assign(1, 0);
+    test_nodes.clear();
+    test_vectors.clear();
+  }
+
+
+
+  template <int dim>
+  void
+  QuadratureTable<dim>::add_point(const double                       weight,
+                                  const std::vector<Tensor<1, dim>> &row)
+  {
+    AssertDimension(row.size(), n_nodes);
+    weights.push_back(weight);
+    trial.insert(trial.end(), row.begin(), row.end());
+    test_offsets.push_back(test_offsets.back());
+  }
+
+
+
+  template <int dim>
+  void
+  QuadratureTable<dim>::add_test_vector(const unsigned int    a,
+                                        const Tensor<1, dim> &test)
+  {
+    Assert(!test_is_trial, ExcInternalError());
+    AssertIndexRange(a, n_nodes);
+    test_nodes.push_back(a);
+    test_vectors.push_back(test);
+    ++test_offsets.back();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  QuadratureTable<dim>::n_points() const
+  {
+    return weights.size();
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  deformation_gradient(const QuadratureTable<dim>        &table,
+                       const unsigned int                 q,
+                       const std::vector<Tensor<1, dim>> &y)
+  {
+    const Tensor<1, dim> *B = &table.trial[q * table.n_nodes];
+    Tensor<2, dim>        F;
+    for (unsigned int b = 0; b < table.n_nodes; ++b)
+      for (unsigned int A = 0; A < dim; ++A)
+        for (unsigned int D = 0; D < dim; ++D)
+          F[A][D] += y[b][A] * B[b][D];
+    return F;
+  }
+
+
+
+  template <int dim>
+  void
+  assemble_element(const QuadratureTable<dim>        &table,
+                   const std::vector<Tensor<1, dim>> &y,
+                   const Materials::Material<dim>    &material,
+                   Vector<double>                    &residual,
+                   FullMatrix<double>                *tangent)
+  {
+    const unsigned int n      = table.n_nodes;
+    const unsigned int n_dofs = n * dim;
+    AssertDimension(y.size(), n);
+    residual.reinit(n_dofs);
+    if (tangent != nullptr)
+      tangent->reinit(n_dofs, n_dofs);
+
+    Tensor<2, dim> P;
+    Tensor<4, dim> A;
+    // AB[b]_{ABC} = A_ABCD B^{qb}_D, reused for every test node
+    std::vector<Tensor<3, dim>> AB(tangent != nullptr ? n : 0);
+
+    for (unsigned int q = 0; q < table.n_points(); ++q)
+      {
+        const double          w = table.weights[q];
+        const Tensor<1, dim> *B = &table.trial[q * n];
+        const Tensor<2, dim>  F = deformation_gradient(table, q, y);
+        if (tangent != nullptr)
+          material.evaluate(F, P, A);
+        else
+          P = material.first_piola_stress(F);
+
+        if (tangent != nullptr)
+          for (unsigned int b = 0; b < n; ++b)
+            {
+              Tensor<3, dim> &ab = AB[b];
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < dim; ++j)
+                  for (unsigned int k = 0; k < dim; ++k)
+                    {
+                      double s = 0;
+                      for (unsigned int l = 0; l < dim; ++l)
+                        s += A[i][j][k][l] * B[b][l];
+                      ab[i][j][k] = w * s;
+                    }
+            }
+
+        // Loop over the (sparse) test vectors of this point.
+        const auto test_node = [&](const unsigned int t) {
+          return table.test_is_trial ? t : table.test_nodes[t];
+        };
+        const auto test_vector =
+          [&](const unsigned int t) -> const Tensor<1, dim> & {
+          return table.test_is_trial ? B[t] : table.test_vectors[t];
+        };
+        const unsigned int t_begin =
+          table.test_is_trial ? 0 : table.test_offsets[q];
+        const unsigned int t_end =
+          table.test_is_trial ? n : table.test_offsets[q + 1];
+        for (unsigned int t = t_begin; t < t_end; ++t)
+          {
+            const unsigned int    a = test_node(t);
+            const Tensor<1, dim> &T = test_vector(t);
+            const Tensor<1, dim>  PT = P * T;
+            for (unsigned int i = 0; i < dim; ++i)
+              residual(a * dim + i) += w * PT[i];
+            if (tangent == nullptr)
+              continue;
+            for (unsigned int b = 0; b < n; ++b)
+              {
+                const Tensor<3, dim> &ab = AB[b];
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int k = 0; k < dim; ++k)
+                    {
+                      double s = 0;
+                      for (unsigned int j = 0; j < dim; ++j)
+                        s += T[j] * ab[i][j][k];
+                      (*tangent)(a * dim + i, b * dim + k) += s;
+                    }
+              }
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  add_unit_stress_residual(const QuadratureTable<dim>  &table,
+                           std::vector<Tensor<1, dim>> &d)
+  {
+    AssertDimension(d.size(), table.n_nodes);
+    for (unsigned int q = 0; q < table.n_points(); ++q)
+      {
+        const double w = table.weights[q];
+        if (table.test_is_trial)
+          for (unsigned int a = 0; a < table.n_nodes; ++a)
+            d[a] += w * table.trial[q * table.n_nodes + a];
+        else
+          for (unsigned int t = table.test_offsets[q];
+               t < table.test_offsets[q + 1];
+               ++t)
+            d[table.test_nodes[t]] += w * table.test_vectors[t];
+      }
+  }
+
+
+
+  template struct QuadratureTable<2>;
+  template struct QuadratureTable<3>;
+  template void
+  assemble_element<2>(const QuadratureTable<2> &,
+                      const std::vector<Tensor<1, 2>> &,
+                      const Materials::Material<2> &,
+                      Vector<double> &,
+                      FullMatrix<double> *);
+  template void
+  assemble_element<3>(const QuadratureTable<3> &,
+                      const std::vector<Tensor<1, 3>> &,
+                      const Materials::Material<3> &,
+                      Vector<double> &,
+                      FullMatrix<double> *);
+  template Tensor<2, 2>
+  deformation_gradient<2>(const QuadratureTable<2> &,
+                          const unsigned int,
+                          const std::vector<Tensor<1, 2>> &);
+  template Tensor<2, 3>
+  deformation_gradient<3>(const QuadratureTable<3> &,
+                          const unsigned int,
+                          const std::vector<Tensor<1, 3>> &);
+  template void
+  add_unit_stress_residual<2>(const QuadratureTable<2> &,
+                              std::vector<Tensor<1, 2>> &);
+  template void
+  add_unit_stress_residual<3>(const QuadratureTable<3> &,
+                              std::vector<Tensor<1, 3>> &);
+} // namespace pg

@@ -1,0 +1,113 @@
+#include <pg/families/family_set.h>
+
+#include <deal.II/numerics/rtree.h>
+
+#include <boost/geometry/index/rtree.hpp>
+
+#include <algorithm>
+
+namespace pg
+{
+  template <int dim>
+  void
+  FamilySet<dim>::reinit(const ParticleSet<dim> &particles,
+                         const double            horizon_factor,
+                         const unsigned int      nearest_neighbours)
+  {
+    namespace bgi      = boost::geometry::index;
+    const unsigned int n = particles.n_particles();
+
+    std::vector<Point<dim>> points(n);
+    for (unsigned int k = 0; k < n; ++k)
+      points[k] = particles.position(k);
+    const auto tree = pack_rtree_of_indices(points);
+
+    std::vector<std::vector<unsigned int>> neighbours(n);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const Point<dim> &x = points[k];
+        std::vector<unsigned int> found;
+        if (nearest_neighbours > 0)
+          tree.query(bgi::nearest(x, nearest_neighbours + 1),
+                     std::back_inserter(found));
+        else
+          {
+            const double delta = horizon_factor * particles.spacing(k);
+            Point<dim>   lower = x, upper = x;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] -= delta;
+                upper[d] += delta;
+              }
+            std::vector<unsigned int> candidates;
+            tree.query(bgi::intersects(BoundingBox<dim>({lower, upper})),
+                       std::back_inserter(candidates));
+            for (const unsigned int j : candidates)
+              if (x.distance(points[j]) <= delta)
+                found.push_back(j);
+          }
+        for (const unsigned int j : found)
+          if (j != k)
+            neighbours[k].push_back(j);
+      }
+
+    // Pairwise completion: j in H^k => k in H^j.
+    for (unsigned int k = 0; k < n; ++k)
+      for (std::size_t i = 0; i < neighbours[k].size(); ++i)
+        neighbours[neighbours[k][i]].push_back(k);
+    offsets.assign(1, 0);
+    indices.clear();
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        std::vector<unsigned int> &h = neighbours[k];
+        std::sort(h.begin(), h.end());
+        h.erase(std::unique(h.begin(), h.end()), h.end());
+        indices.push_back(k);
+        indices.insert(indices.end(), h.begin(), h.end());
+        offsets.push_back(indices.size());
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  FamilySet<dim>::n_families() const
+  {
+    return offsets.empty() ? 0 : offsets.size() - 1;
+  }
+
+
+
+  template <int dim>
+  ArrayView<const unsigned int>
+  FamilySet<dim>::members(const unsigned int k) const
+  {
+    AssertIndexRange(k, n_families());
+    return make_array_view(indices.data() + offsets[k],
+                           indices.data() + offsets[k + 1]);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  FamilySet<dim>::n_neighbours(const unsigned int k) const
+  {
+    return offsets[k + 1] - offsets[k] - 1;
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  FamilySet<dim>::n_bonds() const
+  {
+    return indices.size() - n_families();
+  }
+
+
+
+  template class FamilySet<2>;
+  template class FamilySet<3>;
+} // namespace pg

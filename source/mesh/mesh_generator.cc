@@ -1,0 +1,625 @@
+#include <pg/base/exceptions.h>
+#include <pg/mesh/mesh_generator.h>
+
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_accessor.h>
+#include <deal.II/grid/tria_description.h>
+#include <deal.II/grid/tria_iterator.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace pg
+{
+  namespace Mesh
+  {
+    namespace
+    {
+      /** "a, b, c" from a list of values, to quote a value in a message. */
+      template <typename Number>
+      std::string
+      join(const std::vector<Number> &values)
+      {
+        std::ostringstream s;
+        for (unsigned int i = 0; i < values.size(); ++i)
+          s << (i > 0 ? ", " : "") << values[i];
+        return s.str();
+      }
+
+
+
+      /**
+       * The whole of @p text as one number. Utilities::string_to_double()
+       * accepts trailing garbage such as '1x', which should be an error here.
+       */
+      bool
+      read_number(const std::string &text, double &value)
+      {
+        std::istringstream s(text);
+        s >> value;
+        if (s.fail())
+          return false;
+        s >> std::ws;
+        return s.eof();
+      }
+
+
+
+      /** A point from the dim values of the entry @p entry. */
+      template <int dim>
+      Point<dim>
+      to_point(const std::vector<double> &values, const std::string &entry)
+      {
+        AssertThrow(values.size() == dim,
+                    ExcBadParameter(entry,
+                                    join(values),
+                                    "it must have " + std::to_string(dim) +
+                                      " comma-separated coordinates, one "
+                                      "per space dimension."));
+        Point<dim> point;
+        for (unsigned int d = 0; d < dim; ++d)
+          point[d] = values[d];
+        return point;
+      }
+
+
+
+      /** 'Subdivisions' as dim values: one value counts for every direction. */
+      template <int dim>
+      std::vector<unsigned int>
+      subdivisions_per_direction(const Parameters::Geometry &parameters)
+      {
+        const std::vector<unsigned int> &values = parameters.subdivisions;
+        AssertThrow(values.size() == 1 || values.size() == dim,
+                    ExcBadParameter("Geometry/Subdivisions",
+                                    join(values),
+                                    "it must have one value (used in every "
+                                    "direction) or " +
+                                      std::to_string(dim) +
+                                      " values, one per space dimension."));
+        return values.size() == 1 ? std::vector<unsigned int>(dim, values[0]) :
+                                    values;
+      }
+
+
+
+      template <int dim>
+      void
+      create_hyper_rectangle(const Parameters::Geometry &parameters,
+                             Triangulation<dim>         &triangulation)
+      {
+        const Point<dim> lower =
+          to_point<dim>(parameters.lower_corner, "Geometry/Lower corner");
+        const Point<dim> upper =
+          to_point<dim>(parameters.upper_corner, "Geometry/Upper corner");
+        for (unsigned int d = 0; d < dim; ++d)
+          AssertThrow(lower[d] != upper[d],
+                      ExcBadParameter("Geometry/Upper corner",
+                                      join(parameters.upper_corner),
+                                      "it must differ from 'Lower corner' in "
+                                      "every coordinate, else the box is "
+                                      "flat."));
+
+        GridGenerator::subdivided_hyper_rectangle(
+          triangulation,
+          subdivisions_per_direction<dim>(parameters),
+          lower,
+          upper,
+          /*colorize=*/true);
+      }
+
+
+
+      /**
+       * Cook's membrane: the colorized rectangle [0,48]x[0,44] mapped so that
+       * the bottom edge runs from (0,0) to (48,44) and the top edge from
+       * (0,44) to (48,60). The map is bilinear, so the straight-sided cells
+       * are mapped exactly and later refinement needs no manifold.
+       */
+      void
+      create_cook_membrane(const Parameters::Geometry &parameters,
+                           Triangulation<2>           &triangulation)
+      {
+        GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                  subdivisions_per_direction<2>(
+                                                    parameters),
+                                                  Point<2>(0., 0.),
+                                                  Point<2>(48., 44.),
+                                                  /*colorize=*/true);
+
+        GridTools::transform(
+          [](const Point<2> &p) {
+            const double y_bottom = 44. * p[0] / 48.;
+            const double y_top    = 44. + 16. * p[0] / 48.;
+            return Point<2>(p[0], y_bottom + (y_top - y_bottom) * p[1] / 44.);
+          },
+          triangulation);
+      }
+
+
+
+      /**
+       * The quarter plate [0,L]^2 minus the disk of radius R at the origin.
+       * Two halves, split at the 45-degree diagonal, each cut into layers
+       * along the rays at 0, 45 and 90 degrees. The inner layers are bounded
+       * by chords of circles (isosceles trapezoids, angles 67.5 and 112.5
+       * degrees) whose radii grow geometrically, so that the radial size of
+       * a cell stays close to its tangential size (about 0.77 r); the outer
+       * layer makes the transition to the straight edges. No angle exceeds
+       * 112.5 degrees, so the cells tolerate a random 'Distortion'.
+       * The hole gets a PolarManifold, the cells a transfinite interpolation
+       * of their boundary, so refinement puts new hole vertices on the circle
+       * and interior vertices where they belong.
+       */
+      void
+      create_plate_with_hole(const Parameters::Geometry &parameters,
+                             Triangulation<2>           &triangulation)
+      {
+        const double L = parameters.plate_size;
+        const double R = parameters.hole_radius;
+        AssertThrow(R > 0. && R < L,
+                    ExcBadParameter("Geometry/Hole radius",
+                                    join(std::vector<double>{R}),
+                                    "it must be positive and smaller than "
+                                    "'Plate size' in subsection 'Geometry'."));
+
+        const unsigned int n_layers =
+          std::max(1,
+                   static_cast<int>(std::ceil(
+                     std::log(L / R) / std::log(1. + numbers::PI / 4.))));
+
+        // The unit directions of the rays and their ends on the outer edges,
+        // written out rather than computed from angles so that the vertices
+        // on the symmetry lines x = 0 and y = 0 lie exactly on them.
+        const double                s         = std::sqrt(0.5);
+        const std::vector<Point<2>> direction = {Point<2>(1., 0.),
+                                                 Point<2>(s, s),
+                                                 Point<2>(0., 1.)};
+        const std::vector<Point<2>> outer     = {Point<2>(L, 0.),
+                                                 Point<2>(L, L),
+                                                 Point<2>(0., L)};
+
+        std::vector<Point<2>> vertices;
+        for (unsigned int ray = 0; ray < 3; ++ray)
+          {
+            for (unsigned int k = 0; k < n_layers; ++k)
+              vertices.push_back(R * std::pow(L / R, 1. * k / n_layers) *
+                                 direction[ray]);
+            vertices.push_back(outer[ray]);
+          }
+
+        // Local x runs outward along the ray, local y counter-clockwise to
+        // the next ray: this orientation has a positive Jacobian.
+        std::vector<CellData<2>> cells;
+        for (unsigned int half = 0; half < 2; ++half)
+          for (unsigned int k = 0; k < n_layers; ++k)
+            {
+              CellData<2> cell;
+              cell.vertices    = {half * (n_layers + 1) + k,
+                                  half * (n_layers + 1) + k + 1,
+                                  (half + 1) * (n_layers + 1) + k,
+                                  (half + 1) * (n_layers + 1) + k + 1};
+              cell.material_id = 0;
+              cells.push_back(cell);
+            }
+        triangulation.create_triangulation(vertices, cells, SubCellData());
+
+        // Boundary ids from the face centres; every boundary face that is not
+        // on a straight edge is on the hole.
+        const types::manifold_id polar_manifold_id = 0;
+        const types::manifold_id tfi_manifold_id   = 1;
+        triangulation.set_all_manifold_ids(tfi_manifold_id);
+        const double tolerance = 1e-10 * L;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const Point<2>     c = face->center();
+                types::boundary_id id;
+                if (std::abs(c[0]) < tolerance)
+                  id = 1;
+                else if (std::abs(c[1]) < tolerance)
+                  id = 2;
+                else if (std::abs(c[0] - L) < tolerance)
+                  id = 3;
+                else if (std::abs(c[1] - L) < tolerance)
+                  id = 4;
+                else
+                  id = 0;
+                face->set_boundary_id(id);
+                face->set_manifold_id(id == 0 ? polar_manifold_id :
+                                                numbers::flat_manifold_id);
+              }
+
+        triangulation.set_manifold(polar_manifold_id,
+                                   PolarManifold<2>(Point<2>()));
+        TransfiniteInterpolationManifold<2> tfi_manifold;
+        tfi_manifold.initialize(triangulation);
+        triangulation.set_manifold(tfi_manifold_id, tfi_manifold);
+      }
+
+
+
+      /** The message for a mesh file that GridIn cannot read. */
+      std::string
+      unreadable_file_message(const std::string &file_name,
+                              const std::string &reason)
+      {
+        return "The mesh file " + file_name +
+               " given as 'File name' in subsection 'Geometry' cannot be "
+               "read: " +
+               reason +
+               ". Check the path (relative paths start in the working "
+               "directory).";
+      }
+
+
+
+      template <int dim>
+      void
+      read_mesh_file(const Parameters::Geometry &parameters,
+                     Triangulation<dim>         &triangulation)
+      {
+        const std::string &file_name = parameters.file_name;
+
+        const std::string::size_type dot = file_name.find_last_of('.');
+        std::string                  extension =
+          (dot == std::string::npos ? "" : file_name.substr(dot + 1));
+        std::transform(extension.begin(),
+                       extension.end(),
+                       extension.begin(),
+                       [](const unsigned char c) { return std::tolower(c); });
+
+        typename GridIn<dim>::Format format;
+        if (extension == "msh")
+          format = GridIn<dim>::msh;
+        else if (extension == "inp")
+          format = GridIn<dim>::abaqus;
+        else if (extension == "ucd")
+          format = GridIn<dim>::ucd;
+        else
+          AssertThrow(false,
+                      ExcBadParameter("Geometry/File name",
+                                      file_name,
+                                      "its extension must be .msh (Gmsh), "
+                                      ".inp (Abaqus) or .ucd (UCD); these "
+                                      "are the formats pg reads."));
+
+        std::ifstream input(file_name);
+        AssertThrow(input.good(),
+                    ExcMessage(unreadable_file_message(
+                      file_name,
+                      "it does not exist or cannot be opened")));
+
+        // GridIn's own message says what is wrong inside the file; print_info
+        // gives it without the source location that what() adds.
+        std::string reason;
+        try
+          {
+            GridIn<dim> grid_in;
+            grid_in.attach_triangulation(triangulation);
+            grid_in.read(input, format);
+          }
+        catch (const ExceptionBase &exc)
+          {
+            std::ostringstream s;
+            exc.print_info(s);
+            reason = "deal.II's GridIn reports: " + Utilities::trim(s.str());
+          }
+        catch (const std::exception &exc)
+          {
+            reason = "deal.II's GridIn reports: " +
+                     Utilities::trim(std::string(exc.what()));
+          }
+        while (!reason.empty() && reason.back() == '.')
+          reason.pop_back();
+        AssertThrow(reason.empty(),
+                    ExcMessage(unreadable_file_message(file_name, reason)));
+        AssertThrow(triangulation.n_active_cells() > 0,
+                    ExcMessage(unreadable_file_message(
+                      file_name,
+                      "it contains no cells of dimension " +
+                        std::to_string(dim))));
+      }
+
+
+
+      /**
+       * Whether a cell is inverted, from the Jacobian of its multilinear map
+       * at each vertex (spanned by the edges that leave the vertex). For
+       * quadrilaterals this is exact: the determinant is affine in the
+       * reference coordinates, so positive at the vertices means positive
+       * everywhere; for hexahedra it is the usual necessary check.
+       */
+      template <int dim>
+      bool
+      is_inverted(const typename Triangulation<dim>::active_cell_iterator &cell)
+      {
+        if (!cell->reference_cell().is_hyper_cube())
+          return !(cell->measure() > 0.);
+
+        // Lexicographic vertex numbering: the neighbour of vertex v along
+        // reference direction d differs from v in bit d.
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            Tensor<2, dim> jacobian;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const Tensor<1, dim> edge =
+                  cell->vertex(v ^ (1U << d)) - cell->vertex(v);
+                const double sign = ((v & (1U << d)) != 0 ? -1. : 1.);
+                for (unsigned int e = 0; e < dim; ++e)
+                  jacobian[e][d] = sign * edge[e];
+              }
+            if (!(determinant(jacobian) > 0.))
+              return true;
+          }
+        return false;
+      }
+
+
+
+      /** A parsed 'Meshfree region'. */
+      template <int dim>
+      struct MeshfreeRegion
+      {
+        enum class Kind
+        {
+          all,
+          none,
+          material_ids,
+          box,
+          ball
+        };
+
+        Kind                            kind = Kind::all;
+        std::vector<types::material_id> material_ids;
+        Point<dim>                      lower;
+        Point<dim>                      upper;
+        Point<dim>                      centre;
+        double                          radius = 0.;
+
+        /**
+         * Whether the centre of @p cell is in the region. Box and ball are
+         * closed, with a tolerance of 1e-10 of their size, so that centres on
+         * their boundary count despite round-off.
+         */
+        bool
+        contains(
+          const typename Triangulation<dim>::active_cell_iterator &cell) const
+        {
+          switch (kind)
+            {
+              case Kind::all:
+                return true;
+              case Kind::none:
+                return false;
+              case Kind::material_ids:
+                return std::find(material_ids.begin(),
+                                 material_ids.end(),
+                                 cell->material_id()) != material_ids.end();
+              case Kind::box:
+                {
+                  const Point<dim> c         = cell->center();
+                  const double     tolerance = 1e-10 * lower.distance(upper);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    if (c[d] < lower[d] - tolerance ||
+                        c[d] > upper[d] + tolerance)
+                      return false;
+                  return true;
+                }
+              case Kind::ball:
+                return cell->center().distance(centre) <= radius * (1. + 1e-10);
+            }
+          return false;
+        }
+      };
+
+
+
+      /** Whether @p text starts with @p word; @p rest gets the remainder. */
+      bool
+      starts_with(const std::string &text,
+                  const std::string &word,
+                  std::string       &rest)
+      {
+        if (text.compare(0, word.size(), word) != 0)
+          return false;
+        rest = text.substr(word.size());
+        return true;
+      }
+
+
+
+      template <int dim>
+      MeshfreeRegion<dim>
+      parse_meshfree_region(const std::string &text)
+      {
+        const ExcBadParameter bad_region(
+          "Geometry/Meshfree region",
+          text,
+          "it must read 'all', 'none', 'material ids 1,2', 'box x0,y0 : "
+          "x1,y1' or 'ball cx,cy : r' with " +
+            std::to_string(dim) + " coordinates per point.");
+
+        // dim comma-separated numbers
+        const auto read_point = [&](const std::string &words) {
+          const std::vector<std::string> coordinates =
+            Utilities::split_string_list(words, ',');
+          AssertThrow(coordinates.size() == dim, bad_region);
+          Point<dim> point;
+          for (unsigned int d = 0; d < dim; ++d)
+            AssertThrow(read_number(coordinates[d], point[d]), bad_region);
+          return point;
+        };
+
+        MeshfreeRegion<dim> region;
+        const std::string   trimmed = Utilities::trim(text);
+        std::string         rest;
+        if (trimmed == "all")
+          region.kind = MeshfreeRegion<dim>::Kind::all;
+        else if (trimmed == "none")
+          region.kind = MeshfreeRegion<dim>::Kind::none;
+        else if (starts_with(trimmed, "material ids", rest))
+          {
+            region.kind = MeshfreeRegion<dim>::Kind::material_ids;
+            for (const std::string &word :
+                 Utilities::split_string_list(rest, ','))
+              {
+                double id;
+                AssertThrow(read_number(word, id) && id >= 0. &&
+                              id < numbers::invalid_material_id &&
+                              id == std::floor(id),
+                            bad_region);
+                region.material_ids.push_back(
+                  static_cast<types::material_id>(id));
+              }
+            AssertThrow(!region.material_ids.empty(), bad_region);
+          }
+        else if (starts_with(trimmed, "box", rest))
+          {
+            region.kind = MeshfreeRegion<dim>::Kind::box;
+            const std::vector<std::string> corners =
+              Utilities::split_string_list(rest, ':');
+            AssertThrow(corners.size() == 2, bad_region);
+            const Point<dim> a = read_point(corners[0]);
+            const Point<dim> b = read_point(corners[1]);
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                region.lower[d] = std::min(a[d], b[d]);
+                region.upper[d] = std::max(a[d], b[d]);
+              }
+          }
+        else if (starts_with(trimmed, "ball", rest))
+          {
+            region.kind = MeshfreeRegion<dim>::Kind::ball;
+            const std::vector<std::string> parts =
+              Utilities::split_string_list(rest, ':');
+            AssertThrow(parts.size() == 2, bad_region);
+            region.centre = read_point(parts[0]);
+            AssertThrow(read_number(parts[1], region.radius) &&
+                          region.radius >= 0.,
+                        bad_region);
+          }
+        else
+          AssertThrow(false, bad_region);
+
+        return region;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    create_mesh(const Parameters::Geometry &parameters,
+                Triangulation<dim>         &triangulation)
+    {
+      Assert(triangulation.n_cells() == 0,
+             ExcMessage("create_mesh() needs an empty triangulation."));
+
+      const std::string &mesh = parameters.mesh;
+      if (mesh == "hyper rectangle")
+        create_hyper_rectangle(parameters, triangulation);
+      else if (mesh == "cook membrane" || mesh == "plate with hole")
+        {
+          AssertThrow(dim == 2,
+                      ExcBadParameter("Geometry/Mesh",
+                                      mesh,
+                                      "this mesh is not yet available in "
+                                      "3-D; use it with 'Dimension = 2'."));
+          if constexpr (dim == 2)
+            {
+              if (mesh == "cook membrane")
+                create_cook_membrane(parameters, triangulation);
+              else
+                create_plate_with_hole(parameters, triangulation);
+            }
+        }
+      else if (mesh == "file")
+        read_mesh_file(parameters, triangulation);
+      else
+        AssertThrow(false,
+                    ExcBadParameter("Geometry/Mesh",
+                                    mesh,
+                                    "it must be 'hyper rectangle', 'cook "
+                                    "membrane', 'plate with hole' or "
+                                    "'file'."));
+
+      triangulation.refine_global(parameters.global_refinement);
+
+      if (parameters.distortion > 0.)
+        {
+          // The shift of each vertex is 'Distortion' times its shortest
+          // adjacent edge. The random engine is seeded by 'Random seed' and
+          // visits the vertices in their global order; for a
+          // parallel::shared::Triangulation every rank moves every vertex,
+          // so all ranks end up with the same mesh.
+          GridTools::distort_random(parameters.distortion,
+                                    triangulation,
+                                    /*keep_boundary=*/true,
+                                    parameters.random_seed);
+
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (is_inverted<dim>(cell))
+              {
+                std::ostringstream centre;
+                centre << cell->center();
+                AssertThrow(false,
+                            ExcBadParameter(
+                              "Geometry/Distortion",
+                              join(std::vector<double>{parameters.distortion}),
+                              "it inverts the cell with centre (" +
+                                centre.str() +
+                                ") of this mesh; use a smaller "
+                                "value or another 'Random "
+                                "seed' in subsection "
+                                "'Geometry'."));
+              }
+        }
+    }
+
+
+
+    template <int dim>
+    std::vector<bool>
+    mark_meshfree_cells(const Parameters::Geometry &parameters,
+                        const Triangulation<dim>   &triangulation)
+    {
+      const MeshfreeRegion<dim> region =
+        parse_meshfree_region<dim>(parameters.meshfree_region);
+
+      std::vector<bool> meshfree(triangulation.n_active_cells(), false);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        meshfree[cell->active_cell_index()] = region.contains(cell);
+      return meshfree;
+    }
+
+
+
+    template void
+    create_mesh<2>(const Parameters::Geometry &, Triangulation<2> &);
+    template void
+    create_mesh<3>(const Parameters::Geometry &, Triangulation<3> &);
+
+    template std::vector<bool>
+    mark_meshfree_cells<2>(const Parameters::Geometry &,
+                           const Triangulation<2> &);
+    template std::vector<bool>
+    mark_meshfree_cells<3>(const Parameters::Geometry &,
+                           const Triangulation<3> &);
+  } // namespace Mesh
+} // namespace pg

@@ -1,0 +1,212 @@
+#include <pg/mesh/particle_set.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/tria.h>
+
+#include <numeric>
+
+namespace pg
+{
+  template <int dim>
+  void
+  ParticleSet<dim>::reinit(const DoFHandler<dim>   &dof_handler,
+                           const std::vector<bool> &meshfree)
+  {
+    const Triangulation<dim> &tria       = dof_handler.get_triangulation();
+    const unsigned int        n_vertices = tria.n_vertices();
+
+    // Which vertices belong to meshfree cells, and which also to FE cells.
+    std::vector<bool> is_particle(n_vertices, false);
+    std::vector<bool> on_fe_cell(n_vertices, false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        (meshfree[cell->active_cell_index()] ? is_particle :
+                                               on_fe_cell)[cell->vertex_index(
+          v)] = true;
+
+    std::vector<unsigned int> particle_of_vertex(n_vertices,
+                                                 numbers::invalid_unsigned_int);
+    vertices.clear();
+    for (unsigned int v = 0; v < n_vertices; ++v)
+      if (is_particle[v])
+        {
+          particle_of_vertex[v] = vertices.size();
+          vertices.push_back(v);
+        }
+    const unsigned int n = vertices.size();
+
+    positions.resize(n);
+    volumes.assign(n, 0.);
+    spacings.assign(n, 0.);
+    dofs.resize(n);
+    area_vectors.assign(n, {});
+    interface.resize(n);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        positions[k] = tria.get_vertices()[vertices[k]];
+        interface[k] = on_fe_cell[vertices[k]];
+      }
+
+    // Lumped volumes and boundary area vectors with the scalar Q1 functions:
+    // for FE_Q(1), shape function i belongs to vertex i.
+    const FE_Q<dim>       fe(1);
+    const QGauss<dim>     quadrature(2);
+    const QGauss<dim - 1> face_quadrature(2);
+    FEValues<dim>     fe_values(fe, quadrature, update_values | update_JxW_values);
+    FEFaceValues<dim> fe_face_values(fe,
+                                     face_quadrature,
+                                     update_values | update_JxW_values |
+                                       update_normal_vectors);
+    std::vector<unsigned int> n_edges(n, 0);
+    std::vector<bool>         edge_done(tria.n_raw_lines(), false);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (meshfree[cell->active_cell_index()])
+        {
+          fe_values.reinit(
+            typename Triangulation<dim>::active_cell_iterator(cell));
+          for (const unsigned int i : cell->vertex_indices())
+            {
+              const unsigned int k = particle_of_vertex[cell->vertex_index(i)];
+              for (const unsigned int q :
+                   fe_values.quadrature_point_indices())
+                volumes[k] += fe_values.shape_value(i, q) * fe_values.JxW(q);
+              for (unsigned int c = 0; c < dim; ++c)
+                dofs[k][c] = cell->vertex_dof_index(i, c);
+            }
+
+          for (unsigned int l = 0; l < cell->n_lines(); ++l)
+            {
+              const auto line = cell->line(l);
+              if (edge_done[line->index()])
+                continue;
+              edge_done[line->index()] = true;
+              for (unsigned int e = 0; e < 2; ++e)
+                {
+                  const unsigned int k =
+                    particle_of_vertex[line->vertex_index(e)];
+                  spacings[k] += line->diameter();
+                  ++n_edges[k];
+                }
+            }
+
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                fe_face_values.reinit(
+                  typename Triangulation<dim>::active_cell_iterator(cell), f);
+                const types::boundary_id id = cell->face(f)->boundary_id();
+                for (const unsigned int i : cell->vertex_indices())
+                  {
+                    Tensor<1, dim> a;
+                    for (const unsigned int q :
+                         fe_face_values.quadrature_point_indices())
+                      a += fe_face_values.shape_value(i, q) *
+                           fe_face_values.normal_vector(q) *
+                           fe_face_values.JxW(q);
+                    if (a.norm() > 0)
+                      area_vectors[particle_of_vertex[cell->vertex_index(i)]]
+                                  [id] += a;
+                  }
+              }
+        }
+
+    for (unsigned int k = 0; k < n; ++k)
+      spacings[k] /= n_edges[k];
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ParticleSet<dim>::n_particles() const
+  {
+    return positions.size();
+  }
+
+
+
+  template <int dim>
+  const Point<dim> &
+  ParticleSet<dim>::position(const unsigned int k) const
+  {
+    AssertIndexRange(k, positions.size());
+    return positions[k];
+  }
+
+
+
+  template <int dim>
+  double
+  ParticleSet<dim>::volume(const unsigned int k) const
+  {
+    AssertIndexRange(k, volumes.size());
+    return volumes[k];
+  }
+
+
+
+  template <int dim>
+  double
+  ParticleSet<dim>::spacing(const unsigned int k) const
+  {
+    AssertIndexRange(k, spacings.size());
+    return spacings[k];
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  ParticleSet<dim>::dof(const unsigned int k, const unsigned int c) const
+  {
+    AssertIndexRange(k, dofs.size());
+    return dofs[k][c];
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ParticleSet<dim>::vertex(const unsigned int k) const
+  {
+    AssertIndexRange(k, vertices.size());
+    return vertices[k];
+  }
+
+
+
+  template <int dim>
+  const std::map<types::boundary_id, Tensor<1, dim>> &
+  ParticleSet<dim>::boundary_area_vectors(const unsigned int k) const
+  {
+    AssertIndexRange(k, area_vectors.size());
+    return area_vectors[k];
+  }
+
+
+
+  template <int dim>
+  bool
+  ParticleSet<dim>::on_interface(const unsigned int k) const
+  {
+    AssertIndexRange(k, interface.size());
+    return interface[k];
+  }
+
+
+
+  template <int dim>
+  double
+  ParticleSet<dim>::total_volume() const
+  {
+    return std::accumulate(volumes.begin(), volumes.end(), 0.);
+  }
+
+
+
+  template class ParticleSet<2>;
+  template class ParticleSet<3>;
+} // namespace pg

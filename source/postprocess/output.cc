@@ -1,0 +1,282 @@
+#include <pg/postprocess/output.h>
+#include <pg/problem.h>
+
+#include <fstream>
+#include <iomanip>
+#include <limits>
+
+namespace pg
+{
+  template <int dim>
+  std::vector<std::string>
+  stress_field_names()
+  {
+    std::vector<std::string> names;
+    const char               axis[] = {'x', 'y', 'z'};
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        names.push_back(std::string("F_") + axis[i] + axis[j]);
+    for (const std::string c : {"xx", "yy", "zz", "xy", "yz", "xz"})
+      names.push_back("sigma_" + c);
+    names.push_back("von_mises");
+    return names;
+  }
+
+
+
+  template <int dim>
+  void
+  stress_field_values(const Materials::Material<dim> &material,
+                      const Tensor<2, dim>           &F,
+                      std::vector<double>            &values)
+  {
+    values.clear();
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        values.push_back(F[i][j]);
+    // Where F is inverted (J <= 0) the stress is undefined: written as NaN,
+    // so ParaView shows the hole instead of a made-up value. This happens
+    // for the Q1 interpolant of badly wrong PG solutions on meshfree cells.
+    Tensor<2, 3> s;
+    bool         defined = true;
+    try
+      {
+        s = material.cauchy_stress(F);
+      }
+    catch (...)
+      {
+        defined = false;
+      }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const double v :
+         {s[0][0], s[1][1], s[2][2], s[0][1], s[1][2], s[0][2]})
+      values.push_back(defined ? v : nan);
+    values.push_back(defined ? Materials::von_mises_stress(s) : nan);
+  }
+
+
+
+  template <int dim>
+  StressPostprocessor<dim>::StressPostprocessor(
+    const Materials::Material<dim> &material)
+    : material(material)
+  {}
+
+
+
+  template <int dim>
+  void
+  StressPostprocessor<dim>::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<dim> &inputs,
+    std::vector<Vector<double>>                &computed_quantities) const
+  {
+    std::vector<double> values;
+    for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
+      {
+        Tensor<2, dim> F;
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            F[i]    = inputs.solution_gradients[p][i];
+            F[i][i] += 1.;
+          }
+        stress_field_values(material, F, values);
+        for (unsigned int c = 0; c < values.size(); ++c)
+          computed_quantities[p][c] = values[c];
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  StressPostprocessor<dim>::get_names() const
+  {
+    return stress_field_names<dim>();
+  }
+
+
+
+  template <int dim>
+  UpdateFlags
+  StressPostprocessor<dim>::get_needed_update_flags() const
+  {
+    return update_gradients;
+  }
+
+
+
+  template <int dim>
+  ParticleOutput<dim>::ParticleOutput(const std::vector<std::string> &names)
+    : names(names)
+  {}
+
+
+
+  template <int dim>
+  void
+  ParticleOutput<dim>::add_particle(const Point<dim>          &position,
+                                    const std::vector<double> &data)
+  {
+    AssertDimension(data.size(), names.size());
+    DataOutBase::Patch<0, dim> patch;
+    patch.vertices[0] = position;
+    patch.patch_index = patches.size();
+    patch.data.reinit(names.size(), 1);
+    for (unsigned int c = 0; c < data.size(); ++c)
+      patch.data(c, 0) = data[c];
+    patches.push_back(patch);
+  }
+
+
+
+  template <int dim>
+  const std::vector<DataOutBase::Patch<0, dim>> &
+  ParticleOutput<dim>::get_patches() const
+  {
+    return patches;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ParticleOutput<dim>::get_dataset_names() const
+  {
+    return names;
+  }
+
+
+
+  template <int dim>
+  std::vector<
+    std::tuple<unsigned int,
+               unsigned int,
+               std::string,
+               DataComponentInterpretation::DataComponentInterpretation>>
+  ParticleOutput<dim>::get_nonscalar_data_ranges() const
+  {
+    std::vector<
+      std::tuple<unsigned int,
+                 unsigned int,
+                 std::string,
+                 DataComponentInterpretation::DataComponentInterpretation>>
+      ranges;
+    for (unsigned int c = 0; c + dim <= names.size();)
+      {
+        bool vector = true;
+        for (unsigned int d = 1; d < dim; ++d)
+          vector = vector && (names[c + d] == names[c]);
+        if (vector)
+          {
+            ranges.emplace_back(
+              c,
+              c + dim - 1,
+              names[c],
+              DataComponentInterpretation::component_is_part_of_vector);
+            c += dim;
+          }
+        else
+          ++c;
+      }
+    return ranges;
+  }
+
+
+
+  namespace
+  {
+    std::string
+    json_number(const double x)
+    {
+      if (!std::isfinite(x))
+        return "null";
+      std::ostringstream s;
+      s << std::setprecision(17) << x;
+      return s.str();
+    }
+
+
+
+    std::string
+    json_list(const std::vector<double> &values)
+    {
+      std::string s = "[";
+      for (unsigned int i = 0; i < values.size(); ++i)
+        s += (i > 0 ? ", " : "") + json_number(values[i]);
+      return s + "]";
+    }
+  } // namespace
+
+
+
+  void
+  write_summary_json(const RunSummary &s, const std::string &filename)
+  {
+    std::ofstream out(filename);
+    AssertThrow(out,
+                ExcMessage("Cannot write <" + filename +
+                           ">: check 'Directory' in subsection 'Output'."));
+    out << "{\n"
+        << "  \"dimension\": " << s.dimension << ",\n"
+        << "  \"formulation\": \"" << s.formulation << "\",\n"
+        << "  \"n_particles\": " << s.n_particles << ",\n"
+        << "  \"n_fe_cells\": " << s.n_fe_cells << ",\n"
+        << "  \"n_meshfree_cells\": " << s.n_meshfree_cells << ",\n"
+        << "  \"n_families\": " << s.n_families << ",\n"
+        << "  \"n_dofs\": " << s.n_dofs << ",\n"
+        << "  \"matrix_nonzeros\": " << s.matrix_nonzeros << ",\n"
+        << "  \"converged\": " << (s.converged ? "true" : "false") << ",\n"
+        << "  \"load_steps\": " << s.load_steps << ",\n"
+        << "  \"newton_iterations\": " << s.newton_iterations << ",\n"
+        << "  \"newton_residuals_last_step\": "
+        << json_list(s.newton_residuals_last_step) << ",\n"
+        << "  \"max_interior_unit_stress_residual\": "
+        << json_number(s.max_interior_unit_stress_residual) << ",\n";
+    out << "  \"points\": {";
+    for (unsigned int i = 0; i < s.points.size(); ++i)
+      out << (i > 0 ? ", " : "") << "\"" << s.points[i].first
+          << "\": " << json_list(s.points[i].second);
+    out << "},\n  \"reactions\": {";
+    bool first = true;
+    for (const auto &r : s.reactions)
+      {
+        out << (first ? "" : ", ") << "\"" << static_cast<int>(r.first)
+            << "\": " << json_list(r.second);
+        first = false;
+      }
+    out << "},\n";
+    if (s.have_errors)
+      out << "  \"errors\": {\"L2\": " << json_number(s.L2)
+          << ", \"H1\": " << json_number(s.H1)
+          << ", \"L2_relative\": " << json_number(s.L2_relative)
+          << ", \"H1_relative\": " << json_number(s.H1_relative) << "},\n";
+    out << "  \"timing\": {";
+    first = true;
+    for (const auto &t : s.timing)
+      {
+        out << (first ? "" : ", ") << "\"" << t.first
+            << "\": " << json_number(t.second);
+        first = false;
+      }
+    out << "}\n}\n";
+  }
+
+
+
+  template std::vector<std::string>
+  stress_field_names<2>();
+  template std::vector<std::string>
+  stress_field_names<3>();
+  template void
+  stress_field_values<2>(const Materials::Material<2> &,
+                         const Tensor<2, 2> &,
+                         std::vector<double> &);
+  template void
+  stress_field_values<3>(const Materials::Material<3> &,
+                         const Tensor<2, 3> &,
+                         std::vector<double> &);
+  template class StressPostprocessor<2>;
+  template class StressPostprocessor<3>;
+  template class ParticleOutput<2>;
+  template class ParticleOutput<3>;
+} // namespace pg

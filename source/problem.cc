@@ -1,0 +1,1206 @@
+#include <pg/base/exceptions.h>
+#include <pg/base/formulation_code.h>
+#include <pg/base/linear_algebra.h>
+#include <pg/elements/family_elements.h>
+#include <pg/elements/q1_cell.h>
+#include <pg/elements/quadrature_table.h>
+#include <pg/families/family_set.h>
+#include <pg/materials/material.h>
+#include <pg/mesh/mesh_generator.h>
+#include <pg/mesh/particle_set.h>
+#include <pg/postprocess/output.h>
+#include <pg/problem.h>
+#include <pg/solvers/linear_solver.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/table_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/work_stream.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <mutex>
+#include <sstream>
+
+namespace pg
+{
+  template <int dim>
+  class Problem<dim>::Implementation
+  {
+  public:
+    Implementation(const Parameters::AllParameters<dim> &parameters,
+                   const MPI_Comm                        mpi_communicator,
+                   std::ostream                         &out);
+
+    void
+    run();
+
+    void
+    setup();
+
+    void
+    make_constraints(AffineConstraints<double> &c,
+                     const double               t,
+                     const bool                 homogeneous) const;
+
+    void
+    assemble(const bool with_matrix);
+
+    /** One load (sub)step to load factor @p t; returns success. */
+    bool
+    solve_step(const double t, unsigned int &iterations);
+
+    void
+    update_full_solution();
+
+    void
+    postprocess(const unsigned int step, const double t);
+
+    void
+    compute_errors();
+
+    void
+    write_files(const unsigned int step, const double t);
+
+    Tensor<2, dim>
+    particle_deformation_gradient(const unsigned int k) const;
+
+    const Parameters::AllParameters<dim> &prm;
+    const MPI_Comm                        comm;
+    const bool                            root;
+    ConditionalOStream                    pcout;
+    const FormulationCode                 formulation;
+    std::unique_ptr<Materials::Material<dim>> material;
+
+    parallel::shared::Triangulation<dim> triangulation;
+    const FESystem<dim>                  fe;
+    const FE_Q<dim>                      fe_scalar;
+    DoFHandler<dim>                      dof_handler;
+    std::vector<bool>                    meshfree;
+
+    ParticleSet<dim>                     particles;
+    FamilySet<dim>                       families;
+    std::unique_ptr<FamilyElements<dim>> family_elements;
+    std::vector<unsigned int>            owned_families;
+    std::vector<QuadratureTable<dim>>    family_tables;
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> owned_fe_cells;
+    /** Unit-stress residual d^k of every particle (section 8.2). */
+    std::vector<Tensor<1, dim>> unit_stress;
+
+    IndexSet                    owned_dofs, relevant_dofs;
+    AffineConstraints<double>   constraints, zero_constraints;
+    LinearAlgebra::SparseMatrix matrix;
+    LinearAlgebra::Vector       solution, solution_owned, converged_solution;
+    LinearAlgebra::Vector       update, rhs, force;
+    Vector<double>              u_full;
+
+    std::mutex  failure_mutex;
+    std::string failure;
+
+    RunSummary                               summary;
+    TableHandler                             statistics;
+    std::vector<std::pair<double, std::string>> pvd_cells, pvd_particles;
+    Timer                                    total_timer;
+    double time_setup = 0, time_shape = 0, time_assembly = 0, time_solve = 0;
+  };
+
+
+
+  template <int dim>
+  Problem<dim>::Implementation::Implementation(
+    const Parameters::AllParameters<dim> &parameters,
+    const MPI_Comm                        mpi_communicator,
+    std::ostream                         &out)
+    : prm(parameters)
+    , comm(mpi_communicator)
+    , root(Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , pcout(out, root)
+    , formulation(
+        parse_formulation_code(parameters.discretization.formulation))
+    , material(Materials::create_material<dim>(parameters.material))
+    , triangulation(mpi_communicator,
+                    Triangulation<dim>::none,
+                    false,
+                    parallel::shared::Triangulation<dim>::partition_metis)
+    , fe(FE_Q<dim>(1), dim)
+    , fe_scalar(1)
+  {
+    AssertThrow(!(parameters.linear_solver.type == "cg" &&
+                  (formulation.method == FormulationCode::Method::ppg1 ||
+                   formulation.method == FormulationCode::Method::ppg2)),
+                ExcBadParameter("Linear solver/Type",
+                                "cg",
+                                "PPG tangents are not symmetric, so CG cannot "
+                                "solve them; use 'gmres' or 'direct'."));
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::setup()
+  {
+    Timer timer;
+    Mesh::create_mesh(prm.geometry, triangulation);
+    const bool fem = (formulation.method == FormulationCode::Method::fem);
+    meshfree       = fem ? std::vector<bool>(triangulation.n_active_cells(),
+                                       false) :
+                           Mesh::mark_meshfree_cells(prm.geometry, triangulation);
+
+    dof_handler.reinit(triangulation);
+    dof_handler.distribute_dofs(fe);
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      Assert(fe.system_to_component_index(i).first == i % dim &&
+               fe.system_to_component_index(i).second == i / dim,
+             ExcInternalError());
+    owned_dofs    = dof_handler.locally_owned_dofs();
+    relevant_dofs = complete_index_set(dof_handler.n_dofs());
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && !meshfree[cell->active_cell_index()])
+        owned_fe_cells.push_back(cell);
+
+    summary.dimension   = dim;
+    summary.formulation = formulation.text;
+    summary.n_dofs      = dof_handler.n_dofs();
+    for (const bool m : meshfree)
+      (m ? summary.n_meshfree_cells : summary.n_fe_cells) += 1;
+
+    // Particles, families, and the quadrature table of every family owned
+    // by this rank (owned = its master's DoFs are owned here).
+    particles.reinit(dof_handler, meshfree);
+    summary.n_particles = particles.n_particles();
+    time_setup += timer.wall_time();
+    timer.restart();
+    if (particles.n_particles() > 0)
+      {
+        families.reinit(particles,
+                        prm.discretization.horizon_factor,
+                        prm.discretization.nearest_neighbours);
+        summary.n_families = families.n_families();
+        family_elements    = std::make_unique<FamilyElements<dim>>(
+          particles,
+          families,
+          formulation,
+          ShapeFunctions::parse_base(prm.discretization.shape_functions),
+          prm.discretization.weight_exponent);
+        family_elements->initialize();
+        for (unsigned int k = 0; k < particles.n_particles(); ++k)
+          if (owned_dofs.is_element(particles.dof(k, 0)))
+            owned_families.push_back(k);
+        family_tables.resize(owned_families.size());
+        for (unsigned int f = 0; f < owned_families.size(); ++f)
+          family_elements->build(owned_families[f], family_tables[f]);
+      }
+    time_shape += timer.wall_time();
+    timer.restart();
+
+    // Unit-stress residual d^k, summed over the families of all ranks.
+    {
+      std::vector<double> d(particles.n_particles() * dim, 0.);
+      std::vector<Tensor<1, dim>> local;
+      for (unsigned int f = 0; f < owned_families.size(); ++f)
+        {
+          const auto members = families.members(owned_families[f]);
+          local.assign(members.size(), Tensor<1, dim>());
+          add_unit_stress_residual(family_tables[f], local);
+          for (unsigned int a = 0; a < members.size(); ++a)
+            for (unsigned int c = 0; c < dim; ++c)
+              d[members[a] * dim + c] += local[a][c];
+        }
+      Utilities::MPI::sum(d, comm, d);
+      unit_stress.resize(particles.n_particles());
+      for (unsigned int k = 0; k < particles.n_particles(); ++k)
+        {
+          for (unsigned int c = 0; c < dim; ++c)
+            unit_stress[k][c] = d[k * dim + c];
+          if (particles.boundary_area_vectors(k).empty() &&
+              !particles.on_interface(k))
+            summary.max_interior_unit_stress_residual =
+              std::max(summary.max_interior_unit_stress_residual,
+                       unit_stress[k].norm() /
+                         std::pow(particles.spacing(k), dim - 1));
+        }
+    }
+
+    make_constraints(constraints, 0., false);
+    make_constraints(zero_constraints, 0., true);
+
+    DynamicSparsityPattern dsp(relevant_dofs);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : owned_fe_cells)
+      {
+        cell->get_dof_indices(dofs);
+        zero_constraints.add_entries_local_to_global(dofs, dsp, true);
+      }
+    for (const unsigned int k : owned_families)
+      {
+        const auto members = families.members(k);
+        dofs.resize(members.size() * dim);
+        for (unsigned int a = 0; a < members.size(); ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            dofs[a * dim + c] = particles.dof(members[a], c);
+        zero_constraints.add_entries_local_to_global(dofs, dsp, true);
+      }
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               owned_dofs,
+                                               comm,
+                                               relevant_dofs);
+    matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
+    summary.matrix_nonzeros = matrix.n_nonzero_elements();
+
+    solution.reinit(owned_dofs, relevant_dofs, comm);
+    solution_owned.reinit(owned_dofs, comm);
+    converged_solution.reinit(owned_dofs, comm);
+    update.reinit(owned_dofs, comm);
+    rhs.reinit(owned_dofs, comm);
+    force.reinit(owned_dofs, comm);
+    u_full.reinit(dof_handler.n_dofs());
+    time_setup += timer.wall_time();
+
+    // The echo of what was understood (no wall times: tests compare it).
+    unsigned int min_family = 0, max_family = 0;
+    double       mean_family = 0;
+    if (families.n_families() > 0)
+      {
+        min_family = max_family = families.members(0).size();
+        for (unsigned int k = 0; k < families.n_families(); ++k)
+          {
+            const unsigned int s = families.members(k).size();
+            min_family           = std::min(min_family, s);
+            max_family           = std::max(max_family, s);
+            mean_family += s;
+          }
+        mean_family /= families.n_families();
+      }
+    pcout << "pg_solve: " << dim << "-D, formulation '" << formulation.text
+          << "'";
+    if (formulation.method != FormulationCode::Method::fem)
+      pcout << " (" << formulation.method_name() << ", "
+            << (formulation.points == FormulationCode::Points::unl ? "Unl" :
+                                                                     "U1")
+            << ", " << prm.discretization.shape_functions
+            << ", bond correction "
+            << (formulation.bond_correction ? "on" : "off") << ")";
+    pcout << "\n  material:        " << prm.material.model << ", E = "
+          << prm.material.youngs_modulus
+          << ", nu = " << prm.material.poissons_ratio << "\n"
+          << "  cells:           " << triangulation.n_active_cells() << " ("
+          << summary.n_fe_cells << " finite elements, "
+          << summary.n_meshfree_cells << " meshfree)\n"
+          << "  particles:       " << particles.n_particles() << "\n";
+    if (families.n_families() > 0)
+      {
+        std::ostringstream mean;
+        mean << std::fixed << std::setprecision(1) << mean_family;
+        pcout << "  family size:     min " << min_family << ", mean "
+              << mean.str() << ", max " << max_family << " (master included)"
+              << "\n";
+      }
+    pcout << "  DoFs:            " << dof_handler.n_dofs() << "\n"
+          << "  matrix nonzeros: " << summary.matrix_nonzeros << std::endl;
+  }
+
+
+
+  namespace
+  {
+    /** Unit normal of a planar face from its vertices (sign irrelevant). */
+    template <typename CellIterator>
+    auto
+    planar_face_normal(const CellIterator &cell, const unsigned int f)
+    {
+      constexpr int dim = CellIterator::AccessorType::dimension;
+      const auto    face = cell->face(f);
+      Tensor<1, dim> n;
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, dim> e = face->vertex(1) - face->vertex(0);
+          n[0]                   = e[1];
+          n[1]                   = -e[0];
+        }
+      else
+        n = cross_product_3d(face->vertex(1) - face->vertex(0),
+                             face->vertex(2) - face->vertex(0));
+      return n / n.norm();
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::make_constraints(AffineConstraints<double> &c,
+                                                 const double t,
+                                                 const bool homogeneous) const
+  {
+    // Built from all cells on every rank (parallel::shared::Triangulation
+    // knows them all), so every rank has the constraints of every DoF its
+    // families touch, however far they reach.
+    c.clear();
+    c.reinit(relevant_dofs);
+
+    // Dirichlet first: where a Dirichlet and a symmetry condition meet, the
+    // Dirichlet value wins.
+    auto &displacement = const_cast<Functions::ParsedFunction<dim> &>(
+      prm.prescribed_displacement);
+    displacement.set_time(t);
+    for (const auto &[id, mask] : prm.boundary_conditions.dirichlet)
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == id)
+            for (const unsigned int v : cell->face(f)->vertex_indices())
+              for (unsigned int comp = 0; comp < dim; ++comp)
+                if (mask[comp])
+                  {
+                    const types::global_dof_index dof =
+                      cell->face(f)->vertex_dof_index(v, comp);
+                    if (c.is_constrained(dof))
+                      continue;
+                    c.add_line(dof);
+                    if (!homogeneous)
+                      c.set_inhomogeneity(
+                        dof,
+                        displacement.value(cell->face(f)->vertex(v), comp));
+                  }
+
+    for (const types::boundary_id id : prm.boundary_conditions.symmetry)
+      {
+        // The plane's normal, checked to be the same on every face.
+        Tensor<1, dim> normal;
+        bool           found = false;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == id)
+              {
+                const Tensor<1, dim> n = planar_face_normal(cell, f);
+                if (!found)
+                  normal = n, found = true;
+                AssertThrow(std::abs(std::abs(n * normal) - 1.) < 1e-8,
+                            ExcBadParameter(
+                              "Boundary conditions/Symmetry",
+                              std::to_string(id),
+                              "a symmetry boundary must be planar, but the "
+                              "faces of this boundary id have different "
+                              "normals."));
+              }
+        AssertThrow(found,
+                    ExcBadParameter("Boundary conditions/Symmetry",
+                                    std::to_string(id),
+                                    "no boundary face has this id."));
+        // n . u = 0: solve for the component with the largest |n_c| that
+        // is still free.
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == id)
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                {
+                  std::array<types::global_dof_index, dim> dofs;
+                  for (unsigned int comp = 0; comp < dim; ++comp)
+                    dofs[comp] = cell->face(f)->vertex_dof_index(v, comp);
+                  int pivot = -1;
+                  for (unsigned int comp = 0; comp < dim; ++comp)
+                    if (!c.is_constrained(dofs[comp]) &&
+                        std::abs(normal[comp]) > 1e-12 &&
+                        (pivot < 0 ||
+                         std::abs(normal[comp]) > std::abs(normal[pivot])))
+                      pivot = comp;
+                  bool already = false;
+                  for (unsigned int comp = 0; comp < dim; ++comp)
+                    if (std::abs(normal[comp]) > 1e-12 &&
+                        c.is_constrained(dofs[comp]) &&
+                        std::abs(normal[comp]) > 1. - 1e-12)
+                      already = true;
+                  if (pivot < 0 || already)
+                    continue;
+                  c.add_line(dofs[pivot]);
+                  for (unsigned int comp = 0; comp < dim; ++comp)
+                    if (static_cast<int>(comp) != pivot &&
+                        std::abs(normal[comp]) > 1e-12)
+                      c.add_entry(dofs[pivot],
+                                  dofs[comp],
+                                  -normal[comp] / normal[pivot]);
+                }
+      }
+    c.close();
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::update_full_solution()
+  {
+    solution = solution_owned;
+    for (types::global_dof_index i = 0; i < u_full.size(); ++i)
+      u_full[i] = solution[i];
+  }
+
+
+
+  namespace
+  {
+    template <int dim>
+    struct Scratch
+    {
+      Scratch(const FiniteElement<dim> &fe_scalar)
+        : fe_values(fe_scalar,
+                    QGauss<dim>(2),
+                    update_gradients | update_values |
+                      update_quadrature_points | update_JxW_values)
+        , fe_face_values(fe_scalar,
+                         QGauss<dim - 1>(2),
+                         update_values | update_quadrature_points |
+                           update_JxW_values)
+      {}
+      Scratch(const Scratch &other)
+        : fe_values(other.fe_values.get_fe(),
+                    other.fe_values.get_quadrature(),
+                    other.fe_values.get_update_flags())
+        , fe_face_values(other.fe_face_values.get_fe(),
+                         other.fe_face_values.get_quadrature(),
+                         other.fe_face_values.get_update_flags())
+      {}
+      FEValues<dim>               fe_values;
+      FEFaceValues<dim>           fe_face_values;
+      QuadratureTable<dim>        table;
+      std::vector<Tensor<1, dim>> y;
+      Vector<double>              internal;
+    };
+
+    struct Copy
+    {
+      std::vector<types::global_dof_index> dofs;
+      FullMatrix<double>                   matrix;
+      /** f_int - f_ext of the element */
+      Vector<double> residual;
+      bool           with_matrix = true;
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::assemble(const bool with_matrix)
+  {
+    Timer timer;
+    if (with_matrix)
+      matrix = 0;
+    rhs   = 0;
+    force = 0;
+    failure.clear();
+    auto &traction = const_cast<Functions::ParsedFunction<dim> &>(prm.traction);
+    auto &body_force =
+      const_cast<Functions::ParsedFunction<dim> &>(prm.body_force);
+
+    const auto copier = [&](const Copy &copy) {
+      if (copy.dofs.empty())
+        return;
+      Vector<double> minus_residual(copy.residual);
+      minus_residual *= -1.;
+      if (copy.with_matrix)
+        zero_constraints.distribute_local_to_global(
+          copy.matrix, minus_residual, copy.dofs, matrix, rhs);
+      else
+        zero_constraints.distribute_local_to_global(minus_residual,
+                                                    copy.dofs,
+                                                    rhs);
+      force.add(copy.dofs, copy.residual);
+    };
+    const auto record_failure = [&](const std::exception &e) {
+      std::lock_guard<std::mutex> lock(failure_mutex);
+      if (failure.empty())
+        failure = e.what();
+    };
+
+    using CellIterator = typename std::vector<
+      typename DoFHandler<dim>::active_cell_iterator>::const_iterator;
+    WorkStream::run(
+      owned_fe_cells.cbegin(),
+      owned_fe_cells.cend(),
+      [&](const CellIterator &it, Scratch<dim> &scratch, Copy &copy) {
+        copy.dofs.clear();
+        try
+          {
+            const auto &cell = *it;
+            scratch.fe_values.reinit(
+              typename Triangulation<dim>::active_cell_iterator(cell));
+            fill_q1_table(scratch.fe_values, scratch.table);
+            const unsigned int n = cell->n_vertices();
+            copy.dofs.resize(n * dim);
+            cell->get_dof_indices(copy.dofs);
+            scratch.y.resize(n);
+            for (unsigned int b = 0; b < n; ++b)
+              for (unsigned int c = 0; c < dim; ++c)
+                scratch.y[b][c] = cell->vertex(b)[c] - cell->vertex(0)[c] +
+                                  u_full[copy.dofs[b * dim + c]];
+            copy.with_matrix = with_matrix;
+            assemble_element(scratch.table,
+                             scratch.y,
+                             *material,
+                             copy.residual,
+                             with_matrix ? &copy.matrix : nullptr);
+
+            // body force and dead traction on finite element cells
+            Vector<double> f(dim);
+            for (const unsigned int q :
+                 scratch.fe_values.quadrature_point_indices())
+              {
+                body_force.vector_value(
+                  scratch.fe_values.quadrature_point(q), f);
+                for (unsigned int b = 0; b < n; ++b)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    copy.residual(b * dim + c) -=
+                      f(c) * scratch.fe_values.shape_value(b, q) *
+                      scratch.fe_values.JxW(q);
+              }
+            for (const unsigned int face : cell->face_indices())
+              if (cell->face(face)->at_boundary() &&
+                  std::find(prm.boundary_conditions.neumann.begin(),
+                            prm.boundary_conditions.neumann.end(),
+                            cell->face(face)->boundary_id()) !=
+                    prm.boundary_conditions.neumann.end())
+                {
+                  scratch.fe_face_values.reinit(
+                    typename Triangulation<dim>::active_cell_iterator(cell),
+                    face);
+                  for (const unsigned int q :
+                       scratch.fe_face_values.quadrature_point_indices())
+                    {
+                      traction.vector_value(
+                        scratch.fe_face_values.quadrature_point(q), f);
+                      for (unsigned int b = 0; b < n; ++b)
+                        for (unsigned int c = 0; c < dim; ++c)
+                          copy.residual(b * dim + c) -=
+                            f(c) * scratch.fe_face_values.shape_value(b, q) *
+                            scratch.fe_face_values.JxW(q);
+                    }
+                }
+          }
+        catch (const std::exception &e)
+          {
+            copy.dofs.clear();
+            record_failure(e);
+          }
+      },
+      copier,
+      Scratch<dim>(fe_scalar),
+      Copy());
+
+    using FamilyIterator = std::vector<unsigned int>::const_iterator;
+    std::vector<unsigned int> family_index(owned_families.size());
+    for (unsigned int f = 0; f < family_index.size(); ++f)
+      family_index[f] = f;
+    WorkStream::run(
+      family_index.cbegin(),
+      family_index.cend(),
+      [&](const FamilyIterator &it, Scratch<dim> &scratch, Copy &copy) {
+        copy.dofs.clear();
+        try
+          {
+            const unsigned int k       = owned_families[*it];
+            const auto         members = families.members(k);
+            const unsigned int n       = members.size();
+            copy.dofs.resize(n * dim);
+            scratch.y.resize(n);
+            for (unsigned int b = 0; b < n; ++b)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  copy.dofs[b * dim + c] = particles.dof(members[b], c);
+                  scratch.y[b][c] = particles.position(members[b])[c] -
+                                    particles.position(k)[c] +
+                                    u_full[copy.dofs[b * dim + c]];
+                }
+            copy.with_matrix = with_matrix;
+            assemble_element(family_tables[*it],
+                             scratch.y,
+                             *material,
+                             copy.residual,
+                             with_matrix ? &copy.matrix : nullptr);
+          }
+        catch (const std::exception &e)
+          {
+            copy.dofs.clear();
+            record_failure(e);
+          }
+      },
+      copier,
+      Scratch<dim>(fe_scalar),
+      Copy());
+
+    // Particle loads (section 8.2): body force V^k rho_0 b and, on Neumann
+    // boundaries, the traction times the normal part of the unit-stress
+    // residual d^k (the area vector of the test functions actually used).
+    Vector<double>                       f(dim), local(dim);
+    std::vector<types::global_dof_index> dofs(dim);
+    for (const unsigned int k : owned_families)
+      {
+        local = 0;
+        body_force.vector_value(particles.position(k), f);
+        for (unsigned int c = 0; c < dim; ++c)
+          local(c) += particles.volume(k) * f(c);
+        for (const auto &[id, area] : particles.boundary_area_vectors(k))
+          if (std::find(prm.boundary_conditions.neumann.begin(),
+                        prm.boundary_conditions.neumann.end(),
+                        id) != prm.boundary_conditions.neumann.end())
+            {
+              traction.vector_value(particles.position(k), f);
+              const double a = unit_stress[k] * (area / area.norm());
+              for (unsigned int c = 0; c < dim; ++c)
+                local(c) += a * f(c);
+            }
+        for (unsigned int c = 0; c < dim; ++c)
+          dofs[c] = particles.dof(k, c);
+        zero_constraints.distribute_local_to_global(local, dofs, rhs);
+        local *= -1.;
+        force.add(dofs, local);
+      }
+
+    if (with_matrix)
+      matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
+    force.compress(VectorOperation::add);
+    time_assembly += timer.wall_time();
+  }
+
+
+
+  template <int dim>
+  bool
+  Problem<dim>::Implementation::solve_step(const double  t,
+                                           unsigned int &iterations)
+  {
+    auto &displacement = const_cast<Functions::ParsedFunction<dim> &>(
+      prm.prescribed_displacement);
+    for (auto *function :
+         {&displacement,
+          &const_cast<Functions::ParsedFunction<dim> &>(prm.traction),
+          &const_cast<Functions::ParsedFunction<dim> &>(prm.body_force)})
+      function->set_time(t);
+    make_constraints(constraints, t, false);
+    constraints.distribute(solution_owned);
+    update_full_solution();
+
+    summary.newton_residuals_last_step.clear();
+    double             first = 0;
+    std::ostringstream line;
+    line << std::scientific << std::setprecision(2);
+    iterations = 0;
+    for (unsigned int it = 0; it <= prm.newton.maximum_iterations; ++it)
+      {
+        assemble(true);
+        const bool failed =
+          Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0;
+        if (failed)
+          {
+            pcout << "    assembly failed"
+                  << (failure.empty() ? "" : ": " + failure.substr(0, 200))
+                  << std::endl;
+            return false;
+          }
+        const double residual = rhs.l2_norm();
+        summary.newton_residuals_last_step.push_back(residual);
+        if (it == 0)
+          first = residual;
+        line << " " << (first > 0 ? residual / first : 0.);
+        if (!std::isfinite(residual))
+          break;
+        if (residual <= prm.newton.absolute_tolerance ||
+            residual <= prm.newton.relative_tolerance * first)
+          {
+            pcout << "    Newton " << it << ": |R|/|R_0| =" << line.str()
+                  << std::endl;
+            return true;
+          }
+        if (it == prm.newton.maximum_iterations)
+          break;
+
+        Timer timer;
+        update = 0;
+        try
+          {
+            solve_linear_system(
+              prm.linear_solver, dof_handler, matrix, update, rhs);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            time_solve += timer.wall_time();
+            pcout << "    linear solver did not converge in "
+                  << e.last_step << " iterations" << std::endl;
+            return false;
+          }
+        time_solve += timer.wall_time();
+        zero_constraints.distribute(update);
+        solution_owned += update;
+        update_full_solution();
+        ++iterations;
+      }
+    pcout << "    Newton did not converge: |R|/|R_0| =" << line.str()
+          << std::endl;
+    return false;
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  Problem<dim>::Implementation::particle_deformation_gradient(
+    const unsigned int k) const
+  {
+    const auto                  members = families.members(k);
+    const auto                 &B = family_elements->master_gradients(k);
+    Tensor<2, dim>              F;
+    for (unsigned int b = 0; b < members.size(); ++b)
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          const double y = particles.position(members[b])[i] -
+                           particles.position(k)[i] +
+                           u_full[particles.dof(members[b], i)];
+          for (unsigned int j = 0; j < dim; ++j)
+            F[i][j] += y * B[b][j];
+        }
+    return F;
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::compute_errors()
+  {
+    // eq. (7.3): FE cells by Gauss quadrature, particles by their volume
+    // with the trial gradient at the master.
+    auto &exact = const_cast<Functions::ParsedFunction<dim> &>(
+      prm.exact_solution);
+    const auto exact_gradient = [&](const Point<dim> &p) {
+      Tensor<2, dim> G;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          G[i][j] = prm.exact_gradient ? prm.exact_gradient->value(p, i * dim + j) :
+                                         exact.gradient(p, i)[j];
+      return G;
+    };
+    double e0 = 0, e1 = 0, n0 = 0, n1 = 0;
+    const QGauss<dim>  quadrature(3);
+    FEValues<dim>      fe_values(fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector      u(0);
+    std::vector<Tensor<1, dim>>           values(quadrature.size());
+    std::vector<Tensor<2, dim>>           gradients(quadrature.size());
+    Vector<double>                        exact_value(dim);
+    for (const auto &cell : owned_fe_cells)
+      {
+        fe_values.reinit(cell);
+        fe_values[u].get_function_values(u_full, values);
+        fe_values[u].get_function_gradients(u_full, gradients);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Point<dim> &p = fe_values.quadrature_point(q);
+            exact.vector_value(p, exact_value);
+            const Tensor<2, dim> G = exact_gradient(p);
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                e0 += std::pow(exact_value(c) - values[q][c], 2) *
+                      fe_values.JxW(q);
+                n0 += std::pow(exact_value(c), 2) * fe_values.JxW(q);
+              }
+            e1 += (G - gradients[q]).norm_square() * fe_values.JxW(q);
+            n1 += G.norm_square() * fe_values.JxW(q);
+          }
+      }
+    for (const unsigned int k : owned_families)
+      {
+        const Point<dim> &p = particles.position(k);
+        const double      V = particles.volume(k);
+        exact.vector_value(p, exact_value);
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            e0 += std::pow(exact_value(c) - u_full[particles.dof(k, c)], 2) *
+                  V;
+            n0 += std::pow(exact_value(c), 2) * V;
+          }
+        const Tensor<2, dim> G = exact_gradient(p);
+        e1 += (G - (particle_deformation_gradient(k) -
+                    unit_symmetric_tensor<dim>()))
+                .norm_square() *
+              V;
+        n1 += G.norm_square() * V;
+      }
+    summary.have_errors = true;
+    summary.L2          = std::sqrt(Utilities::MPI::sum(e0, comm));
+    summary.H1          = std::sqrt(Utilities::MPI::sum(e1, comm));
+    const double norm0  = std::sqrt(Utilities::MPI::sum(n0, comm));
+    const double norm1  = std::sqrt(Utilities::MPI::sum(n1, comm));
+    summary.L2_relative = norm0 > 0 ? summary.L2 / norm0 : summary.L2;
+    summary.H1_relative = norm1 > 0 ? summary.H1 / norm1 : summary.H1;
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::postprocess(const unsigned int step,
+                                            const double       t)
+  {
+    // Point values: find the cell on every rank (all cells are known).
+    summary.points.clear();
+    const MappingQ1<dim> mapping;
+    for (const auto &[name, coordinates] : prm.output.points)
+      {
+        Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = coordinates[d];
+        std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+          found;
+        try
+          {
+            found =
+              GridTools::find_active_cell_around_point(mapping, dof_handler, p);
+          }
+        catch (...)
+          {
+            AssertThrow(false,
+                        ExcBadParameter("Output/Points",
+                                        name,
+                                        "the point lies outside the mesh."));
+          }
+        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+        found.first->get_dof_indices(dofs);
+        std::vector<double> value(dim, 0.);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          value[fe.system_to_component_index(i).first] +=
+            fe.shape_value(i, found.second) * u_full[dofs[i]];
+        summary.points.emplace_back(name, value);
+      }
+
+    // Reactions: f_int - f_ext summed over the DoFs of each Dirichlet id.
+    summary.reactions.clear();
+    for (const auto &[id, mask] : prm.boundary_conditions.dirichlet)
+      {
+        (void)mask;
+        std::vector<bool> counted(dof_handler.n_dofs(), false);
+        std::vector<double> reaction(dim, 0.);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == id)
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    const auto dof = cell->face(f)->vertex_dof_index(v, c);
+                    if (!counted[dof] && owned_dofs.is_element(dof))
+                      reaction[c] += force[dof];
+                    counted[dof] = true;
+                  }
+        Utilities::MPI::sum(reaction, comm, reaction);
+        summary.reactions[id] = reaction;
+      }
+
+    if (prm.compute_errors)
+      {
+        auto &exact = const_cast<Functions::ParsedFunction<dim> &>(
+          prm.exact_solution);
+        exact.set_time(t);
+        if (prm.exact_gradient)
+          prm.exact_gradient->set_time(t);
+        compute_errors();
+      }
+
+    // statistics.txt
+    statistics.add_value("step", step);
+    statistics.add_value("load factor", t);
+    statistics.add_value("Newton iterations", summary.newton_iterations);
+    statistics.add_value("residual",
+                         summary.newton_residuals_last_step.empty() ?
+                           0. :
+                           summary.newton_residuals_last_step.back());
+    for (const auto &[name, value] : summary.points)
+      for (unsigned int c = 0; c < dim; ++c)
+        statistics.add_value(name + "_u" + std::string(1, "xyz"[c]),
+                             value[c]);
+    if (summary.have_errors)
+      {
+        statistics.add_value("L2 error", summary.L2);
+        statistics.add_value("H1 error", summary.H1);
+      }
+    statistics.add_value("wall time", total_timer.wall_time());
+    statistics.set_scientific("residual", true);
+
+    write_files(step, t);
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::write_files(const unsigned int step,
+                                            const double       t)
+  {
+    const std::string dir = prm.output.directory + "/";
+    summary.timing      = {{"setup", time_setup},
+                           {"shape_functions", time_shape},
+                           {"assembly", time_assembly},
+                           {"solve", time_solve},
+                           {"total", total_timer.wall_time()}};
+    if (root)
+      {
+        std::ofstream stat(dir + "statistics.txt");
+        statistics.write_text(stat,
+                              TableHandler::table_with_separate_column_description);
+        write_summary_json(summary, dir + "summary.json");
+        std::ofstream timing(dir + "timing.txt");
+        for (const auto &[name, seconds] : summary.timing)
+          timing << std::left << std::setw(16) << name << seconds << " s\n";
+      }
+    if (!prm.output.vtu)
+      return;
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<std::string> names(dim, "displacement");
+    data_out.add_data_vector(
+      u_full,
+      names,
+      DataOut<dim>::type_dof_data,
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        dim, DataComponentInterpretation::component_is_part_of_vector));
+    const StressPostprocessor<dim> stress(*material);
+    data_out.add_data_vector(u_full, stress);
+    Vector<float> meshfree_cell(triangulation.n_active_cells());
+    for (unsigned int c = 0; c < meshfree.size(); ++c)
+      meshfree_cell[c] = meshfree[c];
+    data_out.add_data_vector(meshfree_cell, "meshfree");
+    data_out.build_patches();
+    const std::string cells =
+      data_out.write_vtu_with_pvtu_record(dir, "solution", step, comm, 4);
+    pvd_cells.emplace_back(t, cells);
+
+    std::vector<std::string> particle_names(dim, "displacement");
+    for (const std::string &n : stress_field_names<dim>())
+      particle_names.push_back(n);
+    particle_names.push_back("volume");
+    for (unsigned int c = 0; c < dim; ++c)
+      particle_names.push_back("unit_stress_residual");
+    ParticleOutput<dim> particle_out(particle_names);
+    std::vector<double> data, stress_values;
+    for (const unsigned int k : owned_families)
+      {
+        data.clear();
+        for (unsigned int c = 0; c < dim; ++c)
+          data.push_back(u_full[particles.dof(k, c)]);
+        stress_field_values(*material,
+                            particle_deformation_gradient(k),
+                            stress_values);
+        data.insert(data.end(), stress_values.begin(), stress_values.end());
+        data.push_back(particles.volume(k));
+        for (unsigned int c = 0; c < dim; ++c)
+          data.push_back(unit_stress[k][c]);
+        particle_out.add_particle(particles.position(k), data);
+      }
+    const std::string particles_file =
+      particle_out.write_vtu_with_pvtu_record(dir, "particles", step, comm, 4);
+    pvd_particles.emplace_back(t, particles_file);
+    if (root)
+      {
+        std::ofstream pvd(dir + "solution.pvd");
+        DataOutBase::write_pvd_record(pvd, pvd_cells);
+        std::ofstream ppvd(dir + "particles.pvd");
+        DataOutBase::write_pvd_record(ppvd, pvd_particles);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::run()
+  {
+    total_timer.restart();
+    if (root)
+      std::filesystem::create_directories(prm.output.directory);
+    MPI_Barrier(comm);
+
+    setup();
+    update_full_solution();
+    summary.load_steps = 0;
+    postprocess(0, 0.);
+
+    const unsigned int n_steps = prm.loading.load_steps;
+    double             t       = 0;
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double target = static_cast<double>(step) / n_steps;
+        double       dt     = target - t;
+        unsigned int cuts   = 0;
+        std::ostringstream header;
+        header << "  load step " << step << ", t = " << target;
+        pcout << header.str() << std::endl;
+        unsigned int step_iterations = 0;
+        while (t < target - 1e-14)
+          {
+            const double t_new = std::min(target, t + dt);
+            converged_solution = solution_owned;
+            unsigned int iterations = 0;
+            if (solve_step(t_new, iterations))
+              {
+                t = t_new;
+                step_iterations += iterations;
+                continue;
+              }
+            solution_owned = converged_solution;
+            update_full_solution();
+            if (++cuts > prm.loading.maximum_step_cuts)
+              {
+                summary.converged = false;
+                write_files(step, t);
+                AssertThrow(false,
+                            ExcMessage(
+                              "Load step " + std::to_string(step) +
+                              " did not converge after " +
+                              std::to_string(prm.loading.maximum_step_cuts) +
+                              " step cuts (last load factor reached: " +
+                              std::to_string(t) +
+                              "). Increase 'Load steps' or 'Maximum step "
+                              "cuts' in subsection 'Loading', or 'Maximum "
+                              "iterations' in subsection 'Newton'. The "
+                              "results of the converged steps are in '" +
+                              prm.output.directory + "'."));
+              }
+            dt /= 2;
+            pcout << "    cutting the step to dt = " << dt << std::endl;
+          }
+        summary.newton_iterations += step_iterations;
+        summary.load_steps = step;
+        summary.converged  = true;
+        postprocess(step, t);
+      }
+
+    // Final report: normalised where a natural reference exists.
+    for (const auto &[name, value] : summary.points)
+      {
+        pcout << "  point " << name << ": u =";
+        for (const double v : value)
+          pcout << " " << v;
+        pcout << std::endl;
+      }
+    for (const auto &[id, r] : summary.reactions)
+      {
+        pcout << "  reaction on boundary " << static_cast<int>(id) << ":";
+        for (const double v : r)
+          pcout << " " << (std::abs(v) < 1e-9 ? 0. : v);
+        pcout << std::endl;
+      }
+    if (summary.have_errors)
+      pcout << "  errors: L2 relative = " << summary.L2_relative
+            << ", H1 relative = " << summary.H1_relative << std::endl;
+    pcout << "  total Newton iterations: " << summary.newton_iterations
+          << std::endl;
+    write_files(n_steps, 1.);
+  }
+
+
+
+  template <int dim>
+  Problem<dim>::Problem(const Parameters::AllParameters<dim> &parameters,
+                        const MPI_Comm                        mpi_communicator,
+                        std::ostream                         &out)
+    : implementation(
+        std::make_unique<Implementation>(parameters, mpi_communicator, out))
+  {}
+
+
+
+  template <int dim>
+  Problem<dim>::~Problem() = default;
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::run()
+  {
+    implementation->run();
+  }
+
+
+
+  template <int dim>
+  const RunSummary &
+  Problem<dim>::summary() const
+  {
+    return implementation->summary;
+  }
+
+
+
+  template <int dim>
+  void
+  declare_all_parameters(ParameterHandler &prm)
+  {
+    Parameters::AllParameters<dim>::declare_parameters(prm);
+  }
+
+
+
+  namespace
+  {
+    template <int dim>
+    RunSummary
+    run_dim(const std::string &filename,
+            const MPI_Comm     comm,
+            std::ostream      &out)
+    {
+      ParameterHandler prm;
+      declare_all_parameters<dim>(prm);
+      prm.parse_input(filename);
+      Parameters::AllParameters<dim> parameters;
+      parameters.parse_parameters(prm);
+      Problem<dim> problem(parameters, comm, out);
+      problem.run();
+      return problem.summary();
+    }
+  } // namespace
+
+
+
+  RunSummary
+  run_parameter_file(const std::string &filename,
+                     const MPI_Comm     comm,
+                     std::ostream      &out)
+  {
+    const unsigned int dim = Parameters::read_dimension(filename);
+    return (dim == 2) ? run_dim<2>(filename, comm, out) :
+                        run_dim<3>(filename, comm, out);
+  }
+
+
+
+  template class Problem<2>;
+  template class Problem<3>;
+  template void
+  declare_all_parameters<2>(ParameterHandler &);
+  template void
+  declare_all_parameters<3>(ParameterHandler &);
+} // namespace pg
