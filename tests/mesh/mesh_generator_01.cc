@@ -19,9 +19,10 @@
 
 #include "../tests.h"
 
+#include <algorithm>
 #include <fstream>
+#include <limits>
 #include <map>
-#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -416,6 +417,14 @@ namespace
       pg::Mesh::create_mesh(geometry("set Lower corner = 0, 0, 0\n"
                                      "set Upper corner = 1, 1, 1\n"
                                      "set Subdivisions = 1, 2\n"),
+                            triangulation);
+    });
+    print_error("distortion 0.45 of the cook membrane, 3 refinements", []() {
+      Triangulation<2> triangulation;
+      pg::Mesh::create_mesh(geometry("set Mesh = cook membrane\n"
+                                     "set Subdivisions = 2\n"
+                                     "set Global refinement = 3\n"
+                                     "set Distortion = 0.45\n"),
                             triangulation);
     });
 
