@@ -81,6 +81,22 @@ namespace pg
     Tensor<2, dim>
     particle_deformation_gradient(const unsigned int k) const;
 
+    bool
+    is_neumann(const types::boundary_id id) const;
+
+    bool
+    has_neumann_face(
+      const typename DoFHandler<dim>::active_cell_iterator &cell) const;
+
+    /**
+     * Subtract the FE-consistent dead traction load of the Neumann faces of
+     * @p cell from the element residual @p residual (node-major).
+     */
+    void
+    add_face_tractions(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                       FEFaceValues<dim> &fe_face_values,
+                       Vector<double>    &residual) const;
+
     const Parameters::AllParameters<dim> &prm;
     const MPI_Comm                        comm;
     const bool                            root;
@@ -100,6 +116,13 @@ namespace pg
     std::vector<unsigned int>            owned_families;
     std::vector<QuadratureTable<dim>>    family_tables;
     std::vector<typename DoFHandler<dim>::active_cell_iterator> owned_fe_cells;
+    /** Meshfree cells loaded by FE-consistent face tractions ('geometry'). */
+    std::vector<typename DoFHandler<dim>::active_cell_iterator>
+      owned_meshfree_neumann_cells;
+    /** The cell and reference coordinates of every 'Output/Points' entry. */
+    std::vector<
+      std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>
+      point_locations;
     /** Unit-stress residual d^k of every particle (section 8.2). */
     std::vector<Tensor<1, dim>> unit_stress;
 
@@ -173,8 +196,15 @@ namespace pg
     relevant_dofs = complete_index_set(dof_handler.n_dofs());
 
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && !meshfree[cell->active_cell_index()])
-        owned_fe_cells.push_back(cell);
+      if (cell->is_locally_owned())
+        {
+          if (!meshfree[cell->active_cell_index()])
+            owned_fe_cells.push_back(cell);
+          else if (prm.boundary_conditions.particle_traction_area ==
+                     "geometry" &&
+                   has_neumann_face(cell))
+            owned_meshfree_neumann_cells.push_back(cell);
+        }
 
     summary.dimension   = dim;
     summary.formulation = formulation.text;
@@ -238,6 +268,33 @@ namespace pg
                          std::pow(particles.spacing(k), dim - 1));
         }
     }
+
+    // Locate the reference points once (every rank knows all cells).
+    const MappingQ1<dim> mapping;
+    for (const auto &[name, coordinates] : prm.output.points)
+      {
+        Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = coordinates[d];
+        std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+          found;
+        bool inside = true;
+        try
+          {
+            found =
+              GridTools::find_active_cell_around_point(mapping, dof_handler, p);
+            inside = (found.first.state() == IteratorState::valid);
+          }
+        catch (...)
+          {
+            inside = false;
+          }
+        AssertThrow(inside,
+                    ExcBadParameter("Output/Points",
+                                    name,
+                                    "this point lies outside the mesh."));
+        point_locations.push_back(found);
+      }
 
     make_constraints(constraints, 0., false);
     make_constraints(zero_constraints, 0., true);
@@ -312,6 +369,30 @@ namespace pg
         pcout << "  family size:     min " << min_family << ", mean "
               << mean.str() << ", max " << max_family << " (master included)"
               << "\n";
+      }
+    if (!prm.boundary_conditions.neumann.empty() && particles.n_particles())
+      {
+        // How much of the geometric Neumann area the test functions see:
+        // sum of n . d^k over the particles of Neumann faces divided by the
+        // sum of |a^k| (1 for a variationally consistent method).
+        double seen = 0, geometric = 0;
+        for (unsigned int k = 0; k < particles.n_particles(); ++k)
+          for (const auto &[id, area] : particles.boundary_area_vectors(k))
+            if (is_neumann(id))
+              {
+                seen += unit_stress[k] * (area / area.norm());
+                geometric += area.norm();
+              }
+        if (geometric > 0)
+          {
+            std::ostringstream percent;
+            percent << std::fixed << std::setprecision(1)
+                    << 100. * seen / geometric;
+            pcout << "  particle traction area: "
+                  << prm.boundary_conditions.particle_traction_area
+                  << " (the test functions see " << percent.str()
+                  << " % of the Neumann area)\n";
+          }
       }
     pcout << "  DoFs:            " << dof_handler.n_dofs() << "\n"
           << "  matrix nonzeros: " << summary.matrix_nonzeros << std::endl;
@@ -500,6 +581,61 @@ namespace pg
 
 
   template <int dim>
+  bool
+  Problem<dim>::Implementation::is_neumann(const types::boundary_id id) const
+  {
+    return std::find(prm.boundary_conditions.neumann.begin(),
+                     prm.boundary_conditions.neumann.end(),
+                     id) != prm.boundary_conditions.neumann.end();
+  }
+
+
+
+  template <int dim>
+  bool
+  Problem<dim>::Implementation::has_neumann_face(
+    const typename DoFHandler<dim>::active_cell_iterator &cell) const
+  {
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() &&
+          is_neumann(cell->face(f)->boundary_id()))
+        return true;
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::add_face_tractions(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    FEFaceValues<dim>                                    &fe_face_values,
+    Vector<double>                                       &residual) const
+  {
+    Vector<double> f(dim);
+    for (const unsigned int face : cell->face_indices())
+      if (cell->face(face)->at_boundary() &&
+          is_neumann(cell->face(face)->boundary_id()))
+        {
+          fe_face_values.reinit(
+            typename Triangulation<dim>::active_cell_iterator(cell), face);
+          for (const unsigned int q :
+               fe_face_values.quadrature_point_indices())
+            {
+              prm.traction.vector_value(fe_face_values.quadrature_point(q),
+                                        f);
+              for (unsigned int b = 0; b < cell->n_vertices(); ++b)
+                for (unsigned int c = 0; c < dim; ++c)
+                  residual(b * dim + c) -= f(c) *
+                                           fe_face_values.shape_value(b, q) *
+                                           fe_face_values.JxW(q);
+            }
+        }
+  }
+
+
+
+  template <int dim>
   void
   Problem<dim>::Implementation::assemble(const bool with_matrix)
   {
@@ -574,28 +710,7 @@ namespace pg
                       f(c) * scratch.fe_values.shape_value(b, q) *
                       scratch.fe_values.JxW(q);
               }
-            for (const unsigned int face : cell->face_indices())
-              if (cell->face(face)->at_boundary() &&
-                  std::find(prm.boundary_conditions.neumann.begin(),
-                            prm.boundary_conditions.neumann.end(),
-                            cell->face(face)->boundary_id()) !=
-                    prm.boundary_conditions.neumann.end())
-                {
-                  scratch.fe_face_values.reinit(
-                    typename Triangulation<dim>::active_cell_iterator(cell),
-                    face);
-                  for (const unsigned int q :
-                       scratch.fe_face_values.quadrature_point_indices())
-                    {
-                      traction.vector_value(
-                        scratch.fe_face_values.quadrature_point(q), f);
-                      for (unsigned int b = 0; b < n; ++b)
-                        for (unsigned int c = 0; c < dim; ++c)
-                          copy.residual(b * dim + c) -=
-                            f(c) * scratch.fe_face_values.shape_value(b, q) *
-                            scratch.fe_face_values.JxW(q);
-                    }
-                }
+            add_face_tractions(cell, scratch.fe_face_values, copy.residual);
           }
         catch (const std::exception &e)
           {
@@ -648,9 +763,12 @@ namespace pg
       Scratch<dim>(fe_scalar),
       Copy());
 
-    // Particle loads (section 8.2): body force V^k rho_0 b and, on Neumann
-    // boundaries, the traction times the normal part of the unit-stress
-    // residual d^k (the area vector of the test functions actually used).
+    // Particle loads: the body force V^k rho_0 b and, with 'Particle
+    // traction area = test functions', the traction times the normal part
+    // of the unit-stress residual d^k, the area vector of the test
+    // functions actually used (section 8.2, eqs. 4.32-4.35).
+    const bool test_function_area =
+      (prm.boundary_conditions.particle_traction_area == "test functions");
     Vector<double>                       f(dim), local(dim);
     std::vector<types::global_dof_index> dofs(dim);
     for (const unsigned int k : owned_families)
@@ -659,22 +777,35 @@ namespace pg
         body_force.vector_value(particles.position(k), f);
         for (unsigned int c = 0; c < dim; ++c)
           local(c) += particles.volume(k) * f(c);
-        for (const auto &[id, area] : particles.boundary_area_vectors(k))
-          if (std::find(prm.boundary_conditions.neumann.begin(),
-                        prm.boundary_conditions.neumann.end(),
-                        id) != prm.boundary_conditions.neumann.end())
-            {
-              traction.vector_value(particles.position(k), f);
-              const double a = unit_stress[k] * (area / area.norm());
-              for (unsigned int c = 0; c < dim; ++c)
-                local(c) += a * f(c);
-            }
+        if (test_function_area)
+          for (const auto &[id, area] : particles.boundary_area_vectors(k))
+            if (is_neumann(id))
+              {
+                traction.vector_value(particles.position(k), f);
+                const double a = unit_stress[k] * (area / area.norm());
+                for (unsigned int c = 0; c < dim; ++c)
+                  local(c) += a * f(c);
+              }
         for (unsigned int c = 0; c < dim; ++c)
           dofs[c] = particles.dof(k, c);
         zero_constraints.distribute_local_to_global(local, dofs, rhs);
         local *= -1.;
         force.add(dofs, local);
       }
+    // 'geometry': the FE-consistent load on the meshfree boundary faces.
+    {
+      Scratch<dim> scratch(fe_scalar);
+      Copy         copy;
+      for (const auto &cell : owned_meshfree_neumann_cells)
+        {
+          copy.dofs.resize(fe.n_dofs_per_cell());
+          cell->get_dof_indices(copy.dofs);
+          copy.residual.reinit(copy.dofs.size());
+          copy.with_matrix = false;
+          add_face_tractions(cell, scratch.fe_face_values, copy.residual);
+          copier(copy);
+        }
+    }
 
     if (with_matrix)
       matrix.compress(VectorOperation::add);
@@ -864,35 +995,18 @@ namespace pg
   Problem<dim>::Implementation::postprocess(const unsigned int step,
                                             const double       t)
   {
-    // Point values: find the cell on every rank (all cells are known).
+    // Point values from the Q1 interpolant (the nodal values at vertices).
     summary.points.clear();
-    const MappingQ1<dim> mapping;
-    for (const auto &[name, coordinates] : prm.output.points)
+    for (unsigned int i = 0; i < point_locations.size(); ++i)
       {
-        Point<dim> p;
-        for (unsigned int d = 0; d < dim; ++d)
-          p[d] = coordinates[d];
-        std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
-          found;
-        try
-          {
-            found =
-              GridTools::find_active_cell_around_point(mapping, dof_handler, p);
-          }
-        catch (...)
-          {
-            AssertThrow(false,
-                        ExcBadParameter("Output/Points",
-                                        name,
-                                        "the point lies outside the mesh."));
-          }
+        const auto &[cell, reference] = point_locations[i];
         std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-        found.first->get_dof_indices(dofs);
+        cell->get_dof_indices(dofs);
         std::vector<double> value(dim, 0.);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          value[fe.system_to_component_index(i).first] +=
-            fe.shape_value(i, found.second) * u_full[dofs[i]];
-        summary.points.emplace_back(name, value);
+        for (unsigned int j = 0; j < dofs.size(); ++j)
+          value[fe.system_to_component_index(j).first] +=
+            fe.shape_value(j, reference) * u_full[dofs[j]];
+        summary.points.emplace_back(prm.output.points[i].first, value);
       }
 
     // Reactions: f_int - f_ext summed over the DoFs of each Dirichlet id.

@@ -351,6 +351,19 @@ namespace pg
                           "Boundary ids loaded by the dead traction of "
                           "subsection 'Traction' (first Piola traction per "
                           "reference area).");
+        prm.declare_entry(
+          "Particle traction area",
+          "automatic",
+          Patterns::Selection("automatic|geometry|test functions"),
+          "How a traction loads the particles on meshfree boundary faces. "
+          "'geometry': the FE-consistent load, the integral of T N_k over "
+          "the boundary faces (the total load is exact). 'test functions': "
+          "T (n . d^k) with d^k the unit-stress residual of the test "
+          "functions actually used (dissertation eqs. 4.32-4.35, section "
+          "7.1); this is what makes VC-corrected methods pass the patch "
+          "test, but without VC d^k misses part of the boundary area "
+          "(printed at start-up as 'particle load factor'). 'automatic': "
+          "'geometry' (the VC correction is not yet available).");
       }
       prm.leave_subsection();
     }
@@ -396,6 +409,9 @@ namespace pg
         symmetry =
           parse_ids(prm.get("Symmetry"), "Boundary conditions/Symmetry");
         neumann = parse_ids(prm.get("Neumann"), "Boundary conditions/Neumann");
+        particle_traction_area = prm.get("Particle traction area");
+        if (particle_traction_area == "automatic")
+          particle_traction_area = "geometry";
       }
       prm.leave_subsection();
     }

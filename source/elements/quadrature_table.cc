@@ -78,75 +78,94 @@ namespace pg
                    Vector<double>                    &residual,
                    FullMatrix<double>                *tangent)
   {
-    const unsigned int n      = table.n_nodes;
-    const unsigned int n_dofs = n * dim;
+    constexpr unsigned int d3     = dim * dim * dim;
+    const unsigned int     n      = table.n_nodes;
+    const unsigned int     n_dofs = n * dim;
     AssertDimension(y.size(), n);
     residual.reinit(n_dofs);
     if (tangent != nullptr)
       tangent->reinit(n_dofs, n_dofs);
+    // FullMatrix and Vector store their entries contiguously (row-major);
+    // raw pointers keep the innermost loops free of index checks.
+    double *const K = (tangent != nullptr && n_dofs > 0) ? &(*tangent)(0, 0) :
+                                                           nullptr;
+    double *const r = residual.data();
 
     Tensor<2, dim> P;
     Tensor<4, dim> A;
-    // AB[b]_{ABC} = A_ABCD B^{qb}_D, reused for every test node
-    std::vector<Tensor<3, dim>> AB(tangent != nullptr ? n : 0);
+    // ab[b][i][j][k] = w_q A_ijkl B^{qb}_l, reused for every test node
+    std::vector<double> ab(tangent != nullptr ? n * d3 : 0);
 
     for (unsigned int q = 0; q < table.n_points(); ++q)
       {
         const double          w = table.weights[q];
         const Tensor<1, dim> *B = &table.trial[q * n];
         const Tensor<2, dim>  F = deformation_gradient(table, q, y);
-        if (tangent != nullptr)
-          material.evaluate(F, P, A);
+        if (K != nullptr)
+          {
+            material.evaluate(F, P, A);
+            double a_raw[dim][dim][dim][dim];
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                for (unsigned int k = 0; k < dim; ++k)
+                  for (unsigned int l = 0; l < dim; ++l)
+                    a_raw[i][j][k][l] = w * A[i][j][k][l];
+            for (unsigned int b = 0; b < n; ++b)
+              {
+                double Bb[dim];
+                for (unsigned int l = 0; l < dim; ++l)
+                  Bb[l] = B[b][l];
+                double *out = &ab[b * d3];
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = 0; j < dim; ++j)
+                    for (unsigned int k = 0; k < dim; ++k)
+                      {
+                        double s = 0;
+                        for (unsigned int l = 0; l < dim; ++l)
+                          s += a_raw[i][j][k][l] * Bb[l];
+                        out[(i * dim + j) * dim + k] = s;
+                      }
+              }
+          }
         else
           P = material.first_piola_stress(F);
 
-        if (tangent != nullptr)
-          for (unsigned int b = 0; b < n; ++b)
-            {
-              Tensor<3, dim> &ab = AB[b];
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = 0; j < dim; ++j)
-                  for (unsigned int k = 0; k < dim; ++k)
-                    {
-                      double s = 0;
-                      for (unsigned int l = 0; l < dim; ++l)
-                        s += A[i][j][k][l] * B[b][l];
-                      ab[i][j][k] = w * s;
-                    }
-            }
-
-        // Loop over the (sparse) test vectors of this point.
-        const auto test_node = [&](const unsigned int t) {
-          return table.test_is_trial ? t : table.test_nodes[t];
-        };
-        const auto test_vector =
-          [&](const unsigned int t) -> const Tensor<1, dim> & {
-          return table.test_is_trial ? B[t] : table.test_vectors[t];
-        };
+        // The (sparse) test vectors of this point.
         const unsigned int t_begin =
           table.test_is_trial ? 0 : table.test_offsets[q];
         const unsigned int t_end =
           table.test_is_trial ? n : table.test_offsets[q + 1];
         for (unsigned int t = t_begin; t < t_end; ++t)
           {
-            const unsigned int    a = test_node(t);
-            const Tensor<1, dim> &T = test_vector(t);
-            const Tensor<1, dim>  PT = P * T;
+            const unsigned int    a = table.test_is_trial ? t : table.test_nodes[t];
+            const Tensor<1, dim> &T =
+              table.test_is_trial ? B[t] : table.test_vectors[t];
             for (unsigned int i = 0; i < dim; ++i)
-              residual(a * dim + i) += w * PT[i];
-            if (tangent == nullptr)
-              continue;
-            for (unsigned int b = 0; b < n; ++b)
               {
-                const Tensor<3, dim> &ab = AB[b];
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int k = 0; k < dim; ++k)
-                    {
-                      double s = 0;
-                      for (unsigned int j = 0; j < dim; ++j)
-                        s += T[j] * ab[i][j][k];
-                      (*tangent)(a * dim + i, b * dim + k) += s;
-                    }
+                double s = 0;
+                for (unsigned int j = 0; j < dim; ++j)
+                  s += P[i][j] * T[j];
+                r[a * dim + i] += w * s;
+              }
+            if (K == nullptr)
+              continue;
+            double Ta[dim];
+            for (unsigned int j = 0; j < dim; ++j)
+              Ta[j] = T[j];
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                double *row = K + (a * dim + i) * n_dofs;
+                for (unsigned int b = 0; b < n; ++b)
+                  {
+                    const double *in = &ab[b * d3 + i * dim * dim];
+                    for (unsigned int k = 0; k < dim; ++k)
+                      {
+                        double s = 0;
+                        for (unsigned int j = 0; j < dim; ++j)
+                          s += Ta[j] * in[j * dim + k];
+                        row[b * dim + k] += s;
+                      }
+                  }
               }
           }
       }

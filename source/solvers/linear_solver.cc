@@ -19,7 +19,7 @@ namespace pg
   {
     if (parameters.type == "direct")
       {
-        SolverControl control(1, 0);
+        SolverControl control(1, 0, false, false);
         TrilinosWrappers::SolverDirect::AdditionalData data(false,
                                                             "Amesos_Klu");
         TrilinosWrappers::SolverDirect solver(control, data);
@@ -39,7 +39,9 @@ namespace pg
     amg.initialize(matrix, amg_data);
 
     SolverControl control(std::max<unsigned int>(1000, rhs.size()),
-                          parameters.tolerance * rhs.l2_norm());
+                          parameters.tolerance * rhs.l2_norm(),
+                          false,
+                          false);
     if (parameters.type == "cg")
       {
         SolverCG<LinearAlgebra::Vector> cg(control);

@@ -100,6 +100,14 @@ namespace pg
       std::vector<std::pair<types::boundary_id, std::vector<bool>>> dirichlet;
       std::vector<types::boundary_id>                               symmetry;
       std::vector<types::boundary_id>                               neumann;
+      /**
+       * How a traction loads the particles of meshfree boundary faces:
+       * 'geometry' (the FE-consistent load, integral of T N_k over the
+       * faces) or 'test functions' (T (n . d^k), with d^k the unit-stress
+       * residual of the test functions actually used, eq. 4.32-4.35).
+       * 'automatic' is 'geometry' until the VC correction is available.
+       */
+      std::string particle_traction_area;
 
       static void
       declare_parameters(ParameterHandler &prm);

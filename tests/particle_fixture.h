@@ -1,0 +1,75 @@
+#ifndef pg_tests_particle_fixture_h
+#define pg_tests_particle_fixture_h
+
+// A small all-meshfree problem for unit tests: a (possibly distorted)
+// subdivided box, its Q1 DoFs, the particles and the families.
+
+#include <pg/families/family_set.h>
+#include <pg/materials/material.h>
+#include <pg/mesh/particle_set.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+
+#include <random>
+
+template <int dim>
+struct ParticleFixture
+{
+  ParticleFixture(const unsigned int cells_per_direction,
+                  const double       distortion,
+                  const double       horizon_factor)
+    : fe(dealii::FE_Q<dim>(1), dim)
+  {
+    dealii::GridGenerator::subdivided_hyper_cube(tria,
+                                                 cells_per_direction,
+                                                 0.,
+                                                 1.,
+                                                 true);
+    if (distortion > 0)
+      dealii::GridTools::distort_random(distortion, tria, true, 7);
+    dof_handler.reinit(tria);
+    dof_handler.distribute_dofs(fe);
+    particles.reinit(dof_handler,
+                     std::vector<bool>(tria.n_active_cells(), true));
+    families.reinit(particles, horizon_factor, 0);
+  }
+
+  /** The particle closest to @p p. */
+  unsigned int
+  closest(const dealii::Point<dim> &p) const
+  {
+    unsigned int best = 0;
+    for (unsigned int k = 1; k < particles.n_particles(); ++k)
+      if (p.distance(particles.position(k)) <
+          p.distance(particles.position(best)))
+        best = k;
+    return best;
+  }
+
+  dealii::Triangulation<dim> tria;
+  dealii::FESystem<dim>      fe;
+  dealii::DoFHandler<dim>    dof_handler;
+  pg::ParticleSet<dim>       particles;
+  pg::FamilySet<dim>         families;
+};
+
+/** A material from its name, E = 100, nu = 0.3, plane strain. */
+template <int dim>
+std::unique_ptr<pg::Materials::Material<dim>>
+make_material(const std::string &model)
+{
+  pg::Parameters::Material parameters;
+  parameters.model          = model;
+  parameters.youngs_modulus = 100.;
+  parameters.poissons_ratio = 0.3;
+  parameters.density        = 1.;
+  parameters.plane          = "strain";
+  return pg::Materials::create_material<dim>(parameters);
+}
+
+#endif

@@ -1,0 +1,84 @@
+// Bad input gives a clear message that names the entry (with its
+// subsection) or the particle, and says how to fix it. The messages are
+// part of the expected output, so rewording one is a reviewed change.
+
+#include "../tests.h"
+#include "problem_fixture.h"
+
+void
+check(const std::string &title, const std::string &changes)
+{
+  const std::string base = "set Dimension = 2\n"
+                           "subsection Geometry\n"
+                           "  set Subdivisions = 4\n"
+                           "end\n"
+                           "subsection Material\n"
+                           "  set Model = linear elastic\n"
+                           "end\n"
+                           "subsection Boundary conditions\n"
+                           "  set Dirichlet = 0: xy\n"
+                           "  set Neumann = 1\n"
+                           "  subsection Traction\n"
+                           "    set Function expression = 0.1*t; 0\n"
+                           "  end\n"
+                           "end\n"
+                           "subsection Output\n"
+                           "  set VTU = false\n"
+                           "end\n";
+  deallog << title << ":" << std::endl;
+  std::ostringstream screen;
+  try
+    {
+      run_problem<2>(base + changes, screen);
+      deallog << "  no error (wrong)" << std::endl;
+    }
+  catch (ExceptionBase &e)
+    {
+      std::ostringstream message;
+      e.print_info(message);
+      std::string text = message.str();
+      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+        text.pop_back();
+      deallog << text << std::endl;
+    }
+  catch (std::exception &e)
+    {
+      deallog << "  " << e.what() << std::endl;
+    }
+}
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+  check("unknown formulation code",
+        "subsection Discretization\n  set Formulation = XPBG Unl\nend\n");
+  check("formulation not yet available",
+        "subsection Discretization\n"
+        "  set Formulation = VCBCPBG V5sn Unl TL\nend\n");
+  check("contradictory formulation",
+        "subsection Discretization\n  set Formulation = PPG U1\nend\n");
+  check("incompressible material",
+        "subsection Material\n  set Poisson's ratio = 0.5\nend\n");
+  check("horizon too small",
+        "subsection Discretization\n  set Horizon factor = 0.5\nend\n");
+  check("missing mesh file",
+        "subsection Geometry\n  set Mesh = file\n"
+        "  set File name = does_not_exist.msh\nend\n");
+  check("CG with a non-symmetric tangent",
+        "subsection Discretization\n  set Formulation = PPG Unl\nend\n"
+        "subsection Linear solver\n  set Type = cg\nend\n");
+  check("unknown displacement component",
+        "subsection Boundary conditions\n  set Dirichlet = 0: xw\nend\n");
+  check("reference point outside the body",
+        "subsection Output\n  set Points = tip: 2, 0.5\nend\n");
+  check("Newton does not converge",
+        "subsection Material\n  set Model = neo-Hooke\nend\n"
+        "subsection Boundary conditions\n  subsection Traction\n"
+        "    set Function expression = 0.3*t; 0\n  end\nend\n"
+        "subsection Newton\n  set Maximum iterations = 1\nend\n"
+        "subsection Loading\n  set Maximum step cuts = 1\nend\n");
+}
