@@ -93,15 +93,16 @@ namespace pg
      * @p cell from the element residual @p residual (node-major).
      */
     void
-    add_face_tractions(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                       FEFaceValues<dim> &fe_face_values,
-                       Vector<double>    &residual) const;
+    add_face_tractions(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      FEFaceValues<dim>                                    &fe_face_values,
+      Vector<double>                                       &residual) const;
 
-    const Parameters::AllParameters<dim> &prm;
-    const MPI_Comm                        comm;
-    const bool                            root;
-    ConditionalOStream                    pcout;
-    const FormulationCode                 formulation;
+    const Parameters::AllParameters<dim>     &prm;
+    const MPI_Comm                            comm;
+    const bool                                root;
+    ConditionalOStream                        pcout;
+    const FormulationCode                     formulation;
     std::unique_ptr<Materials::Material<dim>> material;
 
     parallel::shared::Triangulation<dim> triangulation;
@@ -110,11 +111,11 @@ namespace pg
     DoFHandler<dim>                      dof_handler;
     std::vector<bool>                    meshfree;
 
-    ParticleSet<dim>                     particles;
-    FamilySet<dim>                       families;
-    std::unique_ptr<FamilyElements<dim>> family_elements;
-    std::vector<unsigned int>            owned_families;
-    std::vector<QuadratureTable<dim>>    family_tables;
+    ParticleSet<dim>                                            particles;
+    FamilySet<dim>                                              families;
+    std::unique_ptr<FamilyElements<dim>>                        family_elements;
+    std::vector<unsigned int>                                   owned_families;
+    std::vector<QuadratureTable<dim>>                           family_tables;
     std::vector<typename DoFHandler<dim>::active_cell_iterator> owned_fe_cells;
     /** Meshfree cells loaded by FE-consistent face tractions ('geometry'). */
     std::vector<typename DoFHandler<dim>::active_cell_iterator>
@@ -136,10 +137,10 @@ namespace pg
     std::mutex  failure_mutex;
     std::string failure;
 
-    RunSummary                               summary;
-    TableHandler                             statistics;
+    RunSummary                                  summary;
+    TableHandler                                statistics;
     std::vector<std::pair<double, std::string>> pvd_cells, pvd_particles;
-    Timer                                    total_timer;
+    Timer                                       total_timer;
     double time_setup = 0, time_shape = 0, time_assembly = 0, time_solve = 0;
   };
 
@@ -154,8 +155,7 @@ namespace pg
     , comm(mpi_communicator)
     , root(Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , pcout(out, root)
-    , formulation(
-        parse_formulation_code(parameters.discretization.formulation))
+    , formulation(parse_formulation_code(parameters.discretization.formulation))
     , material(Materials::create_material<dim>(parameters.material))
     , triangulation(mpi_communicator,
                     Triangulation<dim>::none,
@@ -182,9 +182,8 @@ namespace pg
     Timer timer;
     Mesh::create_mesh(prm.geometry, triangulation);
     const bool fem = (formulation.method == FormulationCode::Method::fem);
-    meshfree       = fem ? std::vector<bool>(triangulation.n_active_cells(),
-                                       false) :
-                           Mesh::mark_meshfree_cells(prm.geometry, triangulation);
+    meshfree = fem ? std::vector<bool>(triangulation.n_active_cells(), false) :
+                     Mesh::mark_meshfree_cells(prm.geometry, triangulation);
 
     dof_handler.reinit(triangulation);
     dof_handler.distribute_dofs(fe);
@@ -243,7 +242,7 @@ namespace pg
 
     // Unit-stress residual d^k, summed over the families of all ranks.
     {
-      std::vector<double> d(particles.n_particles() * dim, 0.);
+      std::vector<double>         d(particles.n_particles() * dim, 0.);
       std::vector<Tensor<1, dim>> local;
       for (unsigned int f = 0; f < owned_families.size(); ++f)
         {
@@ -277,7 +276,7 @@ namespace pg
         for (unsigned int d = 0; d < dim; ++d)
           p[d] = coordinates[d];
         std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
-          found;
+             found;
         bool inside = true;
         try
           {
@@ -299,7 +298,7 @@ namespace pg
     make_constraints(constraints, 0., false);
     make_constraints(zero_constraints, 0., true);
 
-    DynamicSparsityPattern dsp(relevant_dofs);
+    DynamicSparsityPattern               dsp(relevant_dofs);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : owned_fe_cells)
       {
@@ -355,8 +354,8 @@ namespace pg
             << ", " << prm.discretization.shape_functions
             << ", bond correction "
             << (formulation.bond_correction ? "on" : "off") << ")";
-    pcout << "\n  material:        " << prm.material.model << ", E = "
-          << prm.material.youngs_modulus
+    pcout << "\n  material:        " << prm.material.model
+          << ", E = " << prm.material.youngs_modulus
           << ", nu = " << prm.material.poissons_ratio << "\n"
           << "  cells:           " << triangulation.n_active_cells() << " ("
           << summary.n_fe_cells << " finite elements, "
@@ -407,8 +406,8 @@ namespace pg
     auto
     planar_face_normal(const CellIterator &cell, const unsigned int f)
     {
-      constexpr int dim = CellIterator::AccessorType::dimension;
-      const auto    face = cell->face(f);
+      constexpr int  dim  = CellIterator::AccessorType::dimension;
+      const auto     face = cell->face(f);
       Tensor<1, dim> n;
       if constexpr (dim == 2)
         {
@@ -428,7 +427,7 @@ namespace pg
   template <int dim>
   void
   Problem<dim>::Implementation::make_constraints(AffineConstraints<double> &c,
-                                                 const double t,
+                                                 const double               t,
                                                  const bool homogeneous) const
   {
     // Built from all cells on every rank (parallel::shared::Triangulation
@@ -439,8 +438,8 @@ namespace pg
 
     // Dirichlet first: where a Dirichlet and a symmetry condition meet, the
     // Dirichlet value wins.
-    auto &displacement = const_cast<Functions::ParsedFunction<dim> &>(
-      prm.prescribed_displacement);
+    auto &displacement =
+      const_cast<Functions::ParsedFunction<dim> &>(prm.prescribed_displacement);
     displacement.set_time(t);
     for (const auto &[id, mask] : prm.boundary_conditions.dirichlet)
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -475,13 +474,13 @@ namespace pg
                 const Tensor<1, dim> n = planar_face_normal(cell, f);
                 if (!found)
                   normal = n, found = true;
-                AssertThrow(std::abs(std::abs(n * normal) - 1.) < 1e-8,
-                            ExcBadParameter(
-                              "Boundary conditions/Symmetry",
-                              std::to_string(id),
-                              "a symmetry boundary must be planar, but the "
-                              "faces of this boundary id have different "
-                              "normals."));
+                AssertThrow(
+                  std::abs(std::abs(n * normal) - 1.) < 1e-8,
+                  ExcBadParameter("Boundary conditions/Symmetry",
+                                  std::to_string(id),
+                                  "a symmetry boundary must be planar, but the "
+                                  "faces of this boundary id have different "
+                                  "normals."));
               }
         AssertThrow(found,
                     ExcBadParameter("Boundary conditions/Symmetry",
@@ -618,12 +617,11 @@ namespace pg
           is_neumann(cell->face(face)->boundary_id()))
         {
           fe_face_values.reinit(
-            typename Triangulation<dim>::active_cell_iterator(cell), face);
-          for (const unsigned int q :
-               fe_face_values.quadrature_point_indices())
+            typename Triangulation<dim>::active_cell_iterator(cell),
+            face);
+          for (const unsigned int q : fe_face_values.quadrature_point_indices())
             {
-              prm.traction.vector_value(fe_face_values.quadrature_point(q),
-                                        f);
+              prm.traction.vector_value(fe_face_values.quadrature_point(q), f);
               for (unsigned int b = 0; b < cell->n_vertices(); ++b)
                 for (unsigned int c = 0; c < dim; ++c)
                   residual(b * dim + c) -= f(c) *
@@ -655,8 +653,11 @@ namespace pg
       Vector<double> minus_residual(copy.residual);
       minus_residual *= -1.;
       if (copy.with_matrix)
-        zero_constraints.distribute_local_to_global(
-          copy.matrix, minus_residual, copy.dofs, matrix, rhs);
+        zero_constraints.distribute_local_to_global(copy.matrix,
+                                                    minus_residual,
+                                                    copy.dofs,
+                                                    matrix,
+                                                    rhs);
       else
         zero_constraints.distribute_local_to_global(minus_residual,
                                                     copy.dofs,
@@ -702,8 +703,8 @@ namespace pg
             for (const unsigned int q :
                  scratch.fe_values.quadrature_point_indices())
               {
-                body_force.vector_value(
-                  scratch.fe_values.quadrature_point(q), f);
+                body_force.vector_value(scratch.fe_values.quadrature_point(q),
+                                        f);
                 for (unsigned int b = 0; b < n; ++b)
                   for (unsigned int c = 0; c < dim; ++c)
                     copy.residual(b * dim + c) -=
@@ -742,7 +743,7 @@ namespace pg
               for (unsigned int c = 0; c < dim; ++c)
                 {
                   copy.dofs[b * dim + c] = particles.dof(members[b], c);
-                  scratch.y[b][c] = particles.position(members[b])[c] -
+                  scratch.y[b][c]        = particles.position(members[b])[c] -
                                     particles.position(k)[c] +
                                     u_full[copy.dofs[b * dim + c]];
                 }
@@ -821,8 +822,8 @@ namespace pg
   Problem<dim>::Implementation::solve_step(const double  t,
                                            unsigned int &iterations)
   {
-    auto &displacement = const_cast<Functions::ParsedFunction<dim> &>(
-      prm.prescribed_displacement);
+    auto &displacement =
+      const_cast<Functions::ParsedFunction<dim> &>(prm.prescribed_displacement);
     for (auto *function :
          {&displacement,
           &const_cast<Functions::ParsedFunction<dim> &>(prm.traction),
@@ -870,14 +871,17 @@ namespace pg
         update = 0;
         try
           {
-            solve_linear_system(
-              prm.linear_solver, dof_handler, matrix, update, rhs);
+            solve_linear_system(prm.linear_solver,
+                                dof_handler,
+                                matrix,
+                                update,
+                                rhs);
           }
         catch (const SolverControl::NoConvergence &e)
           {
             time_solve += timer.wall_time();
-            pcout << "    linear solver did not converge in "
-                  << e.last_step << " iterations" << std::endl;
+            pcout << "    linear solver did not converge in " << e.last_step
+                  << " iterations" << std::endl;
             return false;
           }
         time_solve += timer.wall_time();
@@ -898,9 +902,9 @@ namespace pg
   Problem<dim>::Implementation::particle_deformation_gradient(
     const unsigned int k) const
   {
-    const auto                  members = families.members(k);
-    const auto                 &B = family_elements->master_gradients(k);
-    Tensor<2, dim>              F;
+    const auto     members = families.members(k);
+    const auto    &B       = family_elements->master_gradients(k);
+    Tensor<2, dim> F;
     for (unsigned int b = 0; b < members.size(); ++b)
       for (unsigned int i = 0; i < dim; ++i)
         {
@@ -921,26 +925,27 @@ namespace pg
   {
     // eq. (7.3): FE cells by Gauss quadrature, particles by their volume
     // with the trial gradient at the master.
-    auto &exact = const_cast<Functions::ParsedFunction<dim> &>(
-      prm.exact_solution);
+    auto &exact =
+      const_cast<Functions::ParsedFunction<dim> &>(prm.exact_solution);
     const auto exact_gradient = [&](const Point<dim> &p) {
       Tensor<2, dim> G;
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
-          G[i][j] = prm.exact_gradient ? prm.exact_gradient->value(p, i * dim + j) :
-                                         exact.gradient(p, i)[j];
+          G[i][j] = prm.exact_gradient ?
+                      prm.exact_gradient->value(p, i * dim + j) :
+                      exact.gradient(p, i)[j];
       return G;
     };
-    double e0 = 0, e1 = 0, n0 = 0, n1 = 0;
-    const QGauss<dim>  quadrature(3);
-    FEValues<dim>      fe_values(fe,
+    double                           e0 = 0, e1 = 0, n0 = 0, n1 = 0;
+    const QGauss<dim>                quadrature(3);
+    FEValues<dim>                    fe_values(fe,
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
-    const FEValuesExtractors::Vector      u(0);
-    std::vector<Tensor<1, dim>>           values(quadrature.size());
-    std::vector<Tensor<2, dim>>           gradients(quadrature.size());
-    Vector<double>                        exact_value(dim);
+    const FEValuesExtractors::Vector u(0);
+    std::vector<Tensor<1, dim>>      values(quadrature.size());
+    std::vector<Tensor<2, dim>>      gradients(quadrature.size());
+    Vector<double>                   exact_value(dim);
     for (const auto &cell : owned_fe_cells)
       {
         fe_values.reinit(cell);
@@ -953,8 +958,8 @@ namespace pg
             const Tensor<2, dim> G = exact_gradient(p);
             for (unsigned int c = 0; c < dim; ++c)
               {
-                e0 += std::pow(exact_value(c) - values[q][c], 2) *
-                      fe_values.JxW(q);
+                e0 +=
+                  std::pow(exact_value(c) - values[q][c], 2) * fe_values.JxW(q);
                 n0 += std::pow(exact_value(c), 2) * fe_values.JxW(q);
               }
             e1 += (G - gradients[q]).norm_square() * fe_values.JxW(q);
@@ -968,8 +973,7 @@ namespace pg
         exact.vector_value(p, exact_value);
         for (unsigned int c = 0; c < dim; ++c)
           {
-            e0 += std::pow(exact_value(c) - u_full[particles.dof(k, c)], 2) *
-                  V;
+            e0 += std::pow(exact_value(c) - u_full[particles.dof(k, c)], 2) * V;
             n0 += std::pow(exact_value(c), 2) * V;
           }
         const Tensor<2, dim> G = exact_gradient(p);
@@ -1014,7 +1018,7 @@ namespace pg
     for (const auto &[id, mask] : prm.boundary_conditions.dirichlet)
       {
         (void)mask;
-        std::vector<bool> counted(dof_handler.n_dofs(), false);
+        std::vector<bool>   counted(dof_handler.n_dofs(), false);
         std::vector<double> reaction(dim, 0.);
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (const unsigned int f : cell->face_indices())
@@ -1034,8 +1038,8 @@ namespace pg
 
     if (prm.compute_errors)
       {
-        auto &exact = const_cast<Functions::ParsedFunction<dim> &>(
-          prm.exact_solution);
+        auto &exact =
+          const_cast<Functions::ParsedFunction<dim> &>(prm.exact_solution);
         exact.set_time(t);
         if (prm.exact_gradient)
           prm.exact_gradient->set_time(t);
@@ -1052,8 +1056,7 @@ namespace pg
                            summary.newton_residuals_last_step.back());
     for (const auto &[name, value] : summary.points)
       for (unsigned int c = 0; c < dim; ++c)
-        statistics.add_value(name + "_u" + std::string(1, "xyz"[c]),
-                             value[c]);
+        statistics.add_value(name + "_u" + std::string(1, "xyz"[c]), value[c]);
     if (summary.have_errors)
       {
         statistics.add_value("L2 error", summary.L2);
@@ -1073,16 +1076,17 @@ namespace pg
                                             const double       t)
   {
     const std::string dir = prm.output.directory + "/";
-    summary.timing      = {{"setup", time_setup},
-                           {"shape_functions", time_shape},
-                           {"assembly", time_assembly},
-                           {"solve", time_solve},
-                           {"total", total_timer.wall_time()}};
+    summary.timing        = {{"setup", time_setup},
+                             {"shape_functions", time_shape},
+                             {"assembly", time_assembly},
+                             {"solve", time_solve},
+                             {"total", total_timer.wall_time()}};
     if (root)
       {
         std::ofstream stat(dir + "statistics.txt");
-        statistics.write_text(stat,
-                              TableHandler::table_with_separate_column_description);
+        statistics.write_text(
+          stat,
+          TableHandler::table_with_separate_column_description);
         write_summary_json(summary, dir + "summary.json");
         std::ofstream timing(dir + "timing.txt");
         for (const auto &[name, seconds] : summary.timing)
@@ -1099,7 +1103,8 @@ namespace pg
       names,
       DataOut<dim>::type_dof_data,
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-        dim, DataComponentInterpretation::component_is_part_of_vector));
+        dim,
+        DataComponentInterpretation::component_is_part_of_vector));
     const StressPostprocessor<dim> stress(*material);
     data_out.add_data_vector(u_full, stress);
     Vector<float> meshfree_cell(triangulation.n_active_cells());
@@ -1165,17 +1170,17 @@ namespace pg
     double             t       = 0;
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
-        const double target = static_cast<double>(step) / n_steps;
-        double       dt     = target - t;
-        unsigned int cuts   = 0;
+        const double       target = static_cast<double>(step) / n_steps;
+        double             dt     = target - t;
+        unsigned int       cuts   = 0;
         std::ostringstream header;
         header << "  load step " << step << ", t = " << target;
         pcout << header.str() << std::endl;
         unsigned int step_iterations = 0;
         while (t < target - 1e-14)
           {
-            const double t_new = std::min(target, t + dt);
-            converged_solution = solution_owned;
+            const double t_new      = std::min(target, t + dt);
+            converged_solution      = solution_owned;
             unsigned int iterations = 0;
             if (solve_step(t_new, iterations))
               {
@@ -1282,9 +1287,7 @@ namespace pg
   {
     template <int dim>
     RunSummary
-    run_dim(const std::string &filename,
-            const MPI_Comm     comm,
-            std::ostream      &out)
+    run_dim(const std::string &filename, const MPI_Comm comm, std::ostream &out)
     {
       ParameterHandler prm;
       declare_all_parameters<dim>(prm);

@@ -36,8 +36,7 @@ print_bound(const std::string &name, const double value, const double bound)
   if (std::abs(value) <= bound)
     deallog << name << " <= " << bound << ": yes" << std::endl;
   else
-    deallog << name << " <= " << bound << ": NO (" << value << ")"
-            << std::endl;
+    deallog << name << " <= " << bound << ": NO (" << value << ")" << std::endl;
 }
 
 /** @p value with @p digits significant digits. */

@@ -88,8 +88,7 @@ main(int argc, char *argv[])
     }
   catch (...)
     {
-      std::cerr << std::endl
-                << "Unknown exception! Aborting!" << std::endl;
+      std::cerr << std::endl << "Unknown exception! Aborting!" << std::endl;
       if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
         MPI_Abort(MPI_COMM_WORLD, 1);
       return 1;

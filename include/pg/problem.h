@@ -20,16 +20,16 @@ namespace pg
    */
   struct RunSummary
   {
-    unsigned int            dimension       = 0;
+    unsigned int            dimension = 0;
     std::string             formulation;
-    unsigned int            n_particles     = 0;
-    unsigned int            n_fe_cells      = 0;
-    unsigned int            n_meshfree_cells = 0;
-    unsigned int            n_families      = 0;
-    types::global_dof_index n_dofs          = 0;
-    std::size_t             matrix_nonzeros = 0;
-    bool                    converged       = false;
-    unsigned int            load_steps      = 0;
+    unsigned int            n_particles       = 0;
+    unsigned int            n_fe_cells        = 0;
+    unsigned int            n_meshfree_cells  = 0;
+    unsigned int            n_families        = 0;
+    types::global_dof_index n_dofs            = 0;
+    std::size_t             matrix_nonzeros   = 0;
+    bool                    converged         = false;
+    unsigned int            load_steps        = 0;
     unsigned int            newton_iterations = 0;
     /** |R| of every Newton iteration of the last (sub)step. */
     std::vector<double> newton_residuals_last_step;
@@ -37,7 +37,7 @@ namespace pg
     std::vector<std::pair<std::string, std::vector<double>>> points;
     /** Dirichlet boundary id -> reaction force (f_int - f_ext). */
     std::map<types::boundary_id, std::vector<double>> reactions;
-    bool   have_errors = false;
+    bool                                              have_errors = false;
     double L2 = 0, H1 = 0, L2_relative = 0, H1_relative = 0;
     /** Seconds: setup, shape_functions, assembly, solve, total. */
     std::map<std::string, double> timing;

@@ -17,8 +17,7 @@ namespace pg
       parse_doubles(const std::string &text, const std::string &entry)
       {
         std::vector<double> values;
-        for (const std::string &word :
-             Utilities::split_string_list(text, ','))
+        for (const std::string &word : Utilities::split_string_list(text, ','))
           {
             try
               {
@@ -42,8 +41,7 @@ namespace pg
       parse_ids(const std::string &text, const std::string &entry)
       {
         std::vector<types::boundary_id> ids;
-        for (const std::string &word :
-             Utilities::split_string_list(text, ','))
+        for (const std::string &word : Utilities::split_string_list(text, ','))
           {
             const int id = Utilities::string_to_int(word);
             AssertThrow(id >= 0 && id < 255,
@@ -144,11 +142,11 @@ namespace pg
     {
       prm.enter_subsection("Geometry");
       {
-        mesh         = prm.get("Mesh");
-        lower_corner = parse_doubles(prm.get("Lower corner"),
-                                     "Geometry/Lower corner");
-        upper_corner = parse_doubles(prm.get("Upper corner"),
-                                     "Geometry/Upper corner");
+        mesh = prm.get("Mesh");
+        lower_corner =
+          parse_doubles(prm.get("Lower corner"), "Geometry/Lower corner");
+        upper_corner =
+          parse_doubles(prm.get("Upper corner"), "Geometry/Upper corner");
         subdivisions.clear();
         for (const double s :
              parse_doubles(prm.get("Subdivisions"), "Geometry/Subdivisions"))
@@ -310,14 +308,14 @@ namespace pg
                   ExcBadParameter("Material/Young's modulus",
                                   std::to_string(youngs_modulus),
                                   "it must be positive."));
-      AssertThrow(poissons_ratio > -1. && poissons_ratio < 0.5,
-                  ExcBadParameter(
-                    "Material/Poisson's ratio",
-                    std::to_string(poissons_ratio),
-                    "it must lie in (-1, 0.5): at 0.5 the material is "
-                    "incompressible, lambda is infinite, and the "
-                    "displacement formulations lock. Use e.g. 0.499 or a "
-                    "mixed formulation (not yet available)."));
+      AssertThrow(
+        poissons_ratio > -1. && poissons_ratio < 0.5,
+        ExcBadParameter("Material/Poisson's ratio",
+                        std::to_string(poissons_ratio),
+                        "it must lie in (-1, 0.5): at 0.5 the material is "
+                        "incompressible, lambda is infinite, and the "
+                        "displacement formulations lock. Use e.g. 0.499 or a "
+                        "mixed formulation (not yet available)."));
       AssertThrow(plane == "strain" || model != "neo-Hooke",
                   ExcBadParameter("Material/Plane",
                                   plane,
@@ -392,8 +390,10 @@ namespace pg
             std::vector<bool> mask(dim, false);
             for (const char c : parts[1])
               {
-                const unsigned int component =
-                  (c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : 99);
+                const unsigned int component = (c == 'x' ? 0 :
+                                                c == 'y' ? 1 :
+                                                c == 'z' ? 2 :
+                                                           99);
                 AssertThrow(component < dim,
                             ExcBadParameter("Boundary conditions/Dirichlet",
                                             text,
@@ -681,7 +681,7 @@ namespace pg
       prm.enter_subsection("Exact solution");
       {
         exact_solution.parse_parameters(prm);
-        compute_errors = prm.get_bool("Compute errors");
+        compute_errors             = prm.get_bool("Compute errors");
         const std::string gradient = prm.get("Gradient expression");
         exact_gradient.reset();
         if (!gradient.empty())
@@ -693,11 +693,11 @@ namespace pg
                                               ','))
               {
                 const auto parts = Utilities::split_string_list(c, '=');
-                AssertThrow(parts.size() == 2,
-                            ExcBadParameter(
-                              "Exact solution/Function constants",
-                              prm.get("Function constants"),
-                              "constants must read 'name=value'."));
+                AssertThrow(
+                  parts.size() == 2,
+                  ExcBadParameter("Exact solution/Function constants",
+                                  prm.get("Function constants"),
+                                  "constants must read 'name=value'."));
                 constants[parts[0]] = Utilities::string_to_double(parts[1]);
               }
             const std::vector<std::string> expressions =

@@ -7,12 +7,11 @@
 namespace pg
 {
   template <int dim>
-  FamilyElements<dim>::FamilyElements(
-    const ParticleSet<dim>    &particles,
-    const FamilySet<dim>      &families,
-    const FormulationCode     &formulation,
-    const ShapeFunctions::Base base,
-    const double               weight_exponent)
+  FamilyElements<dim>::FamilyElements(const ParticleSet<dim>    &particles,
+                                      const FamilySet<dim>      &families,
+                                      const FormulationCode     &formulation,
+                                      const ShapeFunctions::Base base,
+                                      const double weight_exponent)
     : particles(particles)
     , families(families)
     , formulation(formulation)
@@ -50,8 +49,7 @@ namespace pg
     const unsigned int                         point,
     std::vector<Tensor<1, dim>>               &g) const
   {
-    const double cond =
-      ShapeFunctions::raw_gradients(base, geometry, point, g);
+    const double cond = ShapeFunctions::raw_gradients(base, geometry, point, g);
     if (!(cond <= maximum_condition_number))
       {
         std::ostringstream where, detail;
@@ -99,11 +97,11 @@ namespace pg
   FamilyElements<dim>::build(const unsigned int    k,
                              QuadratureTable<dim> &table) const
   {
-    using Method = FormulationCode::Method;
-    const auto                          members = families.members(k);
-    const unsigned int                  n       = members.size();
-    const ShapeFunctions::FamilyGeometry<dim> geom = geometry(k);
-    std::vector<Tensor<1, dim>>         g;
+    using Method                                      = FormulationCode::Method;
+    const auto                                members = families.members(k);
+    const unsigned int                        n       = members.size();
+    const ShapeFunctions::FamilyGeometry<dim> geom    = geometry(k);
+    std::vector<Tensor<1, dim>>               g;
 
     // Effective trial gradients of family k at its member j.
     const auto trial_at = [&](const unsigned int j) {
@@ -125,8 +123,7 @@ namespace pg
           for (unsigned int j = 0; j < n; ++j)
             {
               trial_at(j);
-              table.add_point(geom.volumes[0] * geom.volumes[j] /
-                                family_volume,
+              table.add_point(geom.volumes[0] * geom.volumes[j] / family_volume,
                               g);
             }
         return;
@@ -143,10 +140,9 @@ namespace pg
         if (formulation.method == Method::ppg1)
           {
             // g^{jjk}: family j's master gradient for node k
-            const auto   family_j = families.members(members[j]);
-            const auto   found    = std::lower_bound(family_j.begin() + 1,
-                                                family_j.end(),
-                                                k);
+            const auto family_j = families.members(members[j]);
+            const auto found =
+              std::lower_bound(family_j.begin() + 1, family_j.end(), k);
             Assert(found != family_j.end() && *found == k,
                    ExcMessage("The families are not pairwise."));
             const Tensor<1, dim> &t =

@@ -87,8 +87,8 @@ namespace pg
       tangent->reinit(n_dofs, n_dofs);
     // FullMatrix and Vector store their entries contiguously (row-major);
     // raw pointers keep the innermost loops free of index checks.
-    double *const K = (tangent != nullptr && n_dofs > 0) ? &(*tangent)(0, 0) :
-                                                           nullptr;
+    double *const K =
+      (tangent != nullptr && n_dofs > 0) ? &(*tangent)(0, 0) : nullptr;
     double *const r = residual.data();
 
     Tensor<2, dim> P;
@@ -137,7 +137,8 @@ namespace pg
           table.test_is_trial ? n : table.test_offsets[q + 1];
         for (unsigned int t = t_begin; t < t_end; ++t)
           {
-            const unsigned int    a = table.test_is_trial ? t : table.test_nodes[t];
+            const unsigned int a =
+              table.test_is_trial ? t : table.test_nodes[t];
             const Tensor<1, dim> &T =
               table.test_is_trial ? B[t] : table.test_vectors[t];
             for (unsigned int i = 0; i < dim; ++i)

@@ -14,7 +14,7 @@ namespace pg
                          const double            horizon_factor,
                          const unsigned int      nearest_neighbours)
   {
-    namespace bgi      = boost::geometry::index;
+    namespace bgi        = boost::geometry::index;
     const unsigned int n = particles.n_particles();
 
     std::vector<Point<dim>> points(n);
@@ -25,7 +25,7 @@ namespace pg
     std::vector<std::vector<unsigned int>> neighbours(n);
     for (unsigned int k = 0; k < n; ++k)
       {
-        const Point<dim> &x = points[k];
+        const Point<dim>         &x = points[k];
         std::vector<unsigned int> found;
         if (nearest_neighbours > 0)
           tree.query(bgi::nearest(x, nearest_neighbours + 1),

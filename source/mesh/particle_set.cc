@@ -22,9 +22,9 @@ namespace pg
     std::vector<bool> on_fe_cell(n_vertices, false);
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
-        (meshfree[cell->active_cell_index()] ? is_particle :
-                                               on_fe_cell)[cell->vertex_index(
-          v)] = true;
+        (meshfree[cell->active_cell_index()] ?
+           is_particle :
+           on_fe_cell)[cell->vertex_index(v)] = true;
 
     std::vector<unsigned int> particle_of_vertex(n_vertices,
                                                  numbers::invalid_unsigned_int);
@@ -54,8 +54,8 @@ namespace pg
     const FE_Q<dim>       fe(1);
     const QGauss<dim>     quadrature(2);
     const QGauss<dim - 1> face_quadrature(2);
-    FEValues<dim>     fe_values(fe, quadrature, update_values | update_JxW_values);
-    FEFaceValues<dim> fe_face_values(fe,
+    FEValues<dim> fe_values(fe, quadrature, update_values | update_JxW_values);
+    FEFaceValues<dim>         fe_face_values(fe,
                                      face_quadrature,
                                      update_values | update_JxW_values |
                                        update_normal_vectors);
@@ -70,8 +70,7 @@ namespace pg
           for (const unsigned int i : cell->vertex_indices())
             {
               const unsigned int k = particle_of_vertex[cell->vertex_index(i)];
-              for (const unsigned int q :
-                   fe_values.quadrature_point_indices())
+              for (const unsigned int q : fe_values.quadrature_point_indices())
                 volumes[k] += fe_values.shape_value(i, q) * fe_values.JxW(q);
               for (unsigned int c = 0; c < dim; ++c)
                 dofs[k][c] = cell->vertex_dof_index(i, c);
@@ -96,7 +95,8 @@ namespace pg
             if (cell->face(f)->at_boundary())
               {
                 fe_face_values.reinit(
-                  typename Triangulation<dim>::active_cell_iterator(cell), f);
+                  typename Triangulation<dim>::active_cell_iterator(cell),
+                  f);
                 const types::boundary_id id = cell->face(f)->boundary_id();
                 for (const unsigned int i : cell->vertex_indices())
                   {

@@ -76,7 +76,7 @@ namespace pg
         Tensor<2, dim> F;
         for (unsigned int i = 0; i < dim; ++i)
           {
-            F[i]    = inputs.solution_gradients[p][i];
+            F[i] = inputs.solution_gradients[p][i];
             F[i][i] += 1.;
           }
         stress_field_values(material, F, values);

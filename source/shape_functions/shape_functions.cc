@@ -28,7 +28,8 @@ namespace pg
       condition_number(const Matrix &m)
       {
         const Eigen::SelfAdjointEigenSolver<Matrix> eigen(
-          m, Eigen::EigenvaluesOnly);
+          m,
+          Eigen::EigenvaluesOnly);
         const double lmin = eigen.eigenvalues().minCoeff();
         const double lmax = eigen.eigenvalues().maxCoeff();
         if (!(lmin > 0.) || !std::isfinite(lmax))
@@ -62,9 +63,10 @@ namespace pg
                        const unsigned int           centre,
                        std::vector<Tensor<1, dim>> &g)
       {
-        const unsigned int n = family.bonds.size();
-        const double       h = family_scale(family);
-        Eigen::Matrix<double, dim, dim> M = Eigen::Matrix<double, dim, dim>::Zero();
+        const unsigned int              n = family.bonds.size();
+        const double                    h = family_scale(family);
+        Eigen::Matrix<double, dim, dim> M =
+          Eigen::Matrix<double, dim, dim>::Zero();
         std::vector<Tensor<1, dim>> d(n);
         std::vector<double>         w(n);
         for (unsigned int i = 0; i < n; ++i)
@@ -110,11 +112,11 @@ namespace pg
                               const bool                   moving,
                               std::vector<Tensor<1, dim>> &g)
       {
-        using Vec          = Eigen::Matrix<double, dim + 1, 1>;
-        using Mat          = Eigen::Matrix<double, dim + 1, dim + 1>;
-        const unsigned int n = family.bonds.size();
-        const double       h = family_scale(family);
-        const double       e = family.weight_exponent;
+        using Vec                 = Eigen::Matrix<double, dim + 1, 1>;
+        using Mat                 = Eigen::Matrix<double, dim + 1, dim + 1>;
+        const unsigned int n      = family.bonds.size();
+        const double       h      = family_scale(family);
+        const double       e      = family.weight_exponent;
         const unsigned int centre = moving ? point : 0;
 
         std::vector<Vec>            p(n);
@@ -128,14 +130,14 @@ namespace pg
               p[i](a + 1) = family.bonds[i][a] / h;
             const Tensor<1, dim> r  = family.bonds[i] - family.bonds[centre];
             const double         r2 = r.norm_square();
-            w[i] = weight(r2, e) * family.volumes[i];
+            w[i]                    = weight(r2, e) * family.volumes[i];
             // d|X^i - X|^(-2n)/dX = 2n (X^i - X) |X^i - X|^(-2n-2)
             if (moving && i != centre)
               dw[i] = 2. * e * r * std::pow(r2, -e - 1.) * family.volumes[i];
             M += w[i] * p[i] * p[i].transpose();
           }
         // conditioning of the scaled matrix (basis normalised by h)
-        Mat Ms = M / M.norm();
+        Mat          Ms   = M / M.norm();
         const double cond = condition_number(Ms);
         if (!std::isfinite(cond))
           return cond;
@@ -150,9 +152,9 @@ namespace pg
         g.assign(n, Tensor<1, dim>());
         for (unsigned int a = 0; a < dim; ++a)
           {
-            Vec dp = Vec::Zero();
+            Vec dp    = Vec::Zero();
             dp(a + 1) = 1. / h;
-            Mat dM = Mat::Zero();
+            Mat dM    = Mat::Zero();
             if (moving)
               for (unsigned int l = 0; l < n; ++l)
                 dM += dw[l][a] * p[l] * p[l].transpose();

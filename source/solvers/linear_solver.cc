@@ -22,7 +22,7 @@ namespace pg
         SolverControl control(1, 0, false, false);
         TrilinosWrappers::SolverDirect::AdditionalData data(false,
                                                             "Amesos_Klu");
-        TrilinosWrappers::SolverDirect solver(control, data);
+        TrilinosWrappers::SolverDirect                 solver(control, data);
         solver.solve(matrix, solution, rhs);
         return 0;
       }
@@ -33,8 +33,8 @@ namespace pg
     DoFTools::extract_constant_modes(dof_handler,
                                      ComponentMask(),
                                      constant_modes);
-    amg_data.constant_modes = constant_modes;
-    amg_data.elliptic       = (parameters.type == "cg");
+    amg_data.constant_modes  = constant_modes;
+    amg_data.elliptic        = (parameters.type == "cg");
     amg_data.smoother_sweeps = 2;
     amg.initialize(matrix, amg_data);
 

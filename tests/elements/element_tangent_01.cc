@@ -71,7 +71,7 @@ check_table(const QuadratureTable<dim>        &table,
   assemble_element(table, y, material, r, &K);
 
   double       error = 0, scale = 0;
-  const double eps   = 1e-6 * h;
+  const double eps = 1e-6 * h;
   for (unsigned int b = 0; b < n; ++b)
     for (unsigned int c = 0; c < dim; ++c)
       {
@@ -89,7 +89,7 @@ check_table(const QuadratureTable<dim>        &table,
       }
 
   // rigid translation and rotation
-  const double force_scale = 100. * std::pow(h, dim - 1);
+  const double                force_scale = 100. * std::pow(h, dim - 1);
   std::vector<Tensor<1, dim>> rigid(n);
   Tensor<1, dim>              shift;
   for (unsigned int c = 0; c < dim; ++c)
@@ -97,8 +97,8 @@ check_table(const QuadratureTable<dim>        &table,
   for (unsigned int b = 0; b < n; ++b)
     rigid[b] = X[b] + shift;
   assemble_element(table, rigid, material, r, nullptr);
-  const double translation = r.linfty_norm() / force_scale;
-  const Tensor<2, dim> R   = rotation<dim>(0.7);
+  const double         translation = r.linfty_norm() / force_scale;
+  const Tensor<2, dim> R           = rotation<dim>(0.7);
   for (unsigned int b = 0; b < n; ++b)
     rigid[b] = R * X[b] + shift;
   assemble_element(table, rigid, material, r, nullptr);
@@ -115,8 +115,8 @@ test()
   const ParticleFixture<dim> fixture(dim == 2 ? 6 : 4,
                                      0.25,
                                      dim == 2 ? 2.51 : 2.01);
-  const double               h = 1. / (dim == 2 ? 6 : 4);
-  std::mt19937               rng(42);
+  const double                   h = 1. / (dim == 2 ? 6 : 4);
+  std::mt19937                   rng(42);
   const std::vector<std::string> models = {"linear elastic",
                                            "saint venant kirchhoff",
                                            "neo-Hooke"};
@@ -129,7 +129,7 @@ test()
                     (dim == 3 ? 0.5 : 0.) * Point<dim>::unit_vector(dim - 1)),
     fixture.closest(Point<dim>())};
 
-  const auto report = [&](const std::string &name,
+  const auto report = [&](const std::string           &name,
                           const std::array<double, 3> &worst) {
     const auto verdict = [](const double v, const double bound) {
       std::ostringstream s;
@@ -181,8 +181,10 @@ test()
 
   // The Q1 cell: the same kernel with Gauss points.
   {
-    const FE_Q<dim> fe(1);
-    FEValues<dim>   fe_values(fe, QGauss<dim>(2), update_gradients | update_JxW_values);
+    const FE_Q<dim>       fe(1);
+    FEValues<dim>         fe_values(fe,
+                            QGauss<dim>(2),
+                            update_gradients | update_JxW_values);
     std::array<double, 3> worst{{0, 0, 0}};
     for (const auto &cell : fixture.tria.active_cell_iterators())
       if (cell->active_cell_index() % 7 == 0)
@@ -196,8 +198,8 @@ test()
           for (unsigned int m = 0; m < materials.size(); ++m)
             {
               const auto e = check_table(table, X, *materials[m], h, rng);
-              worst[0] = std::max(worst[0], e[0]);
-              worst[1] = std::max(worst[1], e[1]);
+              worst[0]     = std::max(worst[0], e[0]);
+              worst[1]     = std::max(worst[1], e[1]);
               if (m > 0)
                 worst[2] = std::max(worst[2], e[2]);
             }

@@ -46,8 +46,8 @@ test()
           {
             QuadratureTable<dim> table;
             elements.build(k, table);
-            const auto  geometry = elements.geometry(k);
-            const auto &X        = geometry.bonds;
+            const auto                  geometry = elements.geometry(k);
+            const auto                 &X        = geometry.bonds;
             std::vector<Tensor<1, dim>> y(X.size()), x(X.size());
             for (unsigned int b = 0; b < X.size(); ++b)
               {
@@ -59,14 +59,12 @@ test()
             // PBG Unl: point q is member j (q = 0 is the master)
             for (unsigned int q = 0; q < table.n_points(); ++q)
               {
-                consistency =
-                  std::max(consistency,
-                           (deformation_gradient(table, q, y) - F_exact)
-                             .norm());
+                consistency = std::max(
+                  consistency,
+                  (deformation_gradient(table, q, y) - F_exact).norm());
                 if (q > 0)
                   mapping = std::max(mapping,
-                                     (deformation_gradient(table, q, x) *
-                                        X[q] -
+                                     (deformation_gradient(table, q, x) * X[q] -
                                       (x[q] - x[0]))
                                          .norm() /
                                        X[q].norm());

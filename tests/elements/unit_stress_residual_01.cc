@@ -54,7 +54,7 @@ test(const unsigned int cells, const double horizon_factor)
       Tensor<2, dim> moment;
       for (unsigned int k = 0; k < n; ++k)
         {
-          const Point<dim> &X = fixture.particles.position(k);
+          const Point<dim> &X        = fixture.particles.position(k);
           double            distance = 1.;
           for (unsigned int c = 0; c < dim; ++c)
             distance = std::min({distance, X[c], 1. - X[c]});
@@ -73,11 +73,12 @@ test(const unsigned int cells, const double horizon_factor)
           volume += fixture.particles.volume(k);
         }
       deallog << "  " << std::left << std::setw(10) << code << std::right
-              << " deep interior d = 0: "
-              << (deep < 1e-12 ? "yes" : "NO") << std::endl;
-      print_rounded("    max |d|/h^(dim-1), interior particles near the surface",
-                    near,
-                    4);
+              << " deep interior d = 0: " << (deep < 1e-12 ? "yes" : "NO")
+              << std::endl;
+      print_rounded(
+        "    max |d|/h^(dim-1), interior particles near the surface",
+        near,
+        4);
       print_rounded("    share of the surface area seen by the test functions",
                     seen / geometric,
                     4);

@@ -21,9 +21,9 @@ parameters(const unsigned int dim,
     dim == 2 ? "t*(0.1*x + 0.3*y); t*(0.2*x + 0.4*y)" :
                "t*(0.1*x + 0.3*y + 0.1*z); t*(0.2*x - 0.1*y + 0.05*z); "
                "t*(-0.1*x + 0.1*y + 0.2*z)";
-  const std::string grad =
-    dim == 2 ? "0.1; 0.3; 0.2; 0.4" :
-               "0.1; 0.3; 0.1; 0.2; -0.1; 0.05; -0.1; 0.1; 0.2";
+  const std::string  grad = dim == 2 ?
+                              "0.1; 0.3; 0.2; 0.4" :
+                              "0.1; 0.3; 0.1; 0.2; -0.1; 0.05; -0.1; 0.1; 0.2";
   std::ostringstream s;
   s << "set Dimension = " << dim << "\n"
     << "subsection Geometry\n"
@@ -73,11 +73,10 @@ main(int argc, char **argv)
       const pg::RunSummary s =
         dim == 2 ? run_problem<2>(parameters(2, "FEM", 0.3), screen) :
                    run_problem<3>(parameters(3, "FEM", 0.2), screen);
-      deallog << dim << "d FEM, distorted: converged " << s.converged
-              << ", " << s.newton_iterations << " Newton iterations, "
+      deallog << dim << "d FEM, distorted: converged " << s.converged << ", "
+              << s.newton_iterations << " Newton iterations, "
               << "exact to round-off: "
-              << (s.L2_relative < 1e-12 && s.H1_relative < 1e-12 ? "yes" :
-                                                                   "NO")
+              << (s.L2_relative < 1e-12 && s.H1_relative < 1e-12 ? "yes" : "NO")
               << std::endl;
       if (!(s.L2_relative < 1e-12 && s.H1_relative < 1e-12))
         deallog << "  L2 " << s.L2_relative << " H1 " << s.H1_relative
@@ -86,12 +85,8 @@ main(int argc, char **argv)
 
   deallog << "2d uncorrected PG on a regular lattice (relative L2, H1 error):"
           << std::endl;
-  for (const std::string code : {"PBG Unl",
-                                 "BCPBG Unl",
-                                 "PPG Unl",
-                                 "BCPPG Unl",
-                                 "BCPPG2 Unl",
-                                 "PBG U1"})
+  for (const std::string code :
+       {"PBG Unl", "BCPBG Unl", "PPG Unl", "BCPPG Unl", "BCPPG2 Unl", "PBG U1"})
     {
       const pg::RunSummary s = run_problem<2>(parameters(2, code, 0.), screen);
       std::ostringstream   line;

@@ -15,9 +15,9 @@ namespace pg
    */
   namespace LinearAlgebra
   {
-    using SparseMatrix     = TrilinosWrappers::SparseMatrix;
-    using SparsityPattern  = TrilinosWrappers::SparsityPattern;
-    using Vector           = TrilinosWrappers::MPI::Vector;
+    using SparseMatrix    = TrilinosWrappers::SparseMatrix;
+    using SparsityPattern = TrilinosWrappers::SparsityPattern;
+    using Vector          = TrilinosWrappers::MPI::Vector;
   } // namespace LinearAlgebra
 } // namespace pg
 

@@ -3,11 +3,11 @@
 
 #include <pg/base/global.h>
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
-#include <deal.II/base/function_parser.h>
 
 #include <memory>
 #include <string>
@@ -28,7 +28,7 @@ namespace pg
     struct Geometry
     {
       /** hyper rectangle | cook membrane | plate with hole | file */
-      std::string mesh;
+      std::string               mesh;
       std::vector<double>       lower_corner;
       std::vector<double>       upper_corner;
       std::vector<unsigned int> subdivisions;
@@ -57,7 +57,7 @@ namespace pg
       /** MTE1 | MLS1 | WLS1 | WTE1 */
       std::string shape_functions;
       /** delta = factor x local particle spacing. */
-      double       horizon_factor;
+      double horizon_factor;
       /** > 0: the N nearest particles instead of a horizon. */
       unsigned int nearest_neighbours;
       /** omega = |dX|^(-2n). */
@@ -93,7 +93,8 @@ namespace pg
       parse_parameters(ParameterHandler &prm);
     };
 
-    /** Subsection "Boundary conditions" (the functions are in AllParameters). */
+    /** Subsection "Boundary conditions" (the functions are in AllParameters).
+     */
     struct BoundaryConditions
     {
       /** Boundary id and component mask (x, y, z) of each Dirichlet part. */

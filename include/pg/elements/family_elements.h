@@ -32,11 +32,11 @@ namespace pg
   class FamilyElements
   {
   public:
-    FamilyElements(const ParticleSet<dim>   &particles,
-                   const FamilySet<dim>     &families,
-                   const FormulationCode    &formulation,
+    FamilyElements(const ParticleSet<dim>    &particles,
+                   const FamilySet<dim>      &families,
+                   const FormulationCode     &formulation,
                    const ShapeFunctions::Base base,
-                   const double              weight_exponent);
+                   const double               weight_exponent);
 
     /**
      * Compute the gradients at the master of every family (the PPG test

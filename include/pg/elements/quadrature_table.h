@@ -41,8 +41,8 @@ namespace pg
     unsigned int
     n_points() const;
 
-    unsigned int n_nodes;
-    bool         test_is_trial;
+    unsigned int                n_nodes;
+    bool                        test_is_trial;
     std::vector<double>         weights;
     std::vector<Tensor<1, dim>> trial; //!< n_points x n_nodes, row by row
     std::vector<unsigned int>   test_offsets;

@@ -35,7 +35,8 @@ namespace pg
      * spacing, and the geometric area vectors of the boundary parts.
      */
     void
-    reinit(const DoFHandler<dim> &dof_handler, const std::vector<bool> &meshfree);
+    reinit(const DoFHandler<dim>   &dof_handler,
+           const std::vector<bool> &meshfree);
 
     unsigned int
     n_particles() const;
@@ -77,13 +78,13 @@ namespace pg
     total_volume() const;
 
   private:
-    std::vector<Point<dim>>                                    positions;
-    std::vector<double>                                        volumes;
-    std::vector<double>                                        spacings;
-    std::vector<std::array<types::global_dof_index, dim>>      dofs;
-    std::vector<unsigned int>                                  vertices;
+    std::vector<Point<dim>>                                   positions;
+    std::vector<double>                                       volumes;
+    std::vector<double>                                       spacings;
+    std::vector<std::array<types::global_dof_index, dim>>     dofs;
+    std::vector<unsigned int>                                 vertices;
     std::vector<std::map<types::boundary_id, Tensor<1, dim>>> area_vectors;
-    std::vector<bool>                                          interface;
+    std::vector<bool>                                         interface;
   };
 } // namespace pg
 

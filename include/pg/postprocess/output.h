@@ -41,9 +41,9 @@ namespace pg
     explicit StressPostprocessor(const Materials::Material<dim> &material);
 
     void
-    evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
-                          std::vector<Vector<double>> &computed_quantities)
-      const override;
+    evaluate_vector_field(
+      const DataPostprocessorInputs::Vector<dim> &inputs,
+      std::vector<Vector<double>> &computed_quantities) const override;
 
     std::vector<std::string>
     get_names() const override;
@@ -86,7 +86,7 @@ namespace pg
                  DataComponentInterpretation::DataComponentInterpretation>>
     get_nonscalar_data_ranges() const override;
 
-    std::vector<std::string>               names;
+    std::vector<std::string>                names;
     std::vector<DataOutBase::Patch<0, dim>> patches;
   };
 

@@ -18,8 +18,8 @@ namespace pg
    */
   template <int dim>
   unsigned int
-  solve_linear_system(const Parameters::LinearSolver &parameters,
-                      const DoFHandler<dim>          &dof_handler,
+  solve_linear_system(const Parameters::LinearSolver    &parameters,
+                      const DoFHandler<dim>             &dof_handler,
                       const LinearAlgebra::SparseMatrix &matrix,
                       LinearAlgebra::Vector             &solution,
                       const LinearAlgebra::Vector       &rhs);
