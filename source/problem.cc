@@ -1013,11 +1013,12 @@ namespace pg
         summary.points.emplace_back(prm.output.points[i].first, value);
       }
 
-    // Reactions: f_int - f_ext summed over the DoFs of each Dirichlet id.
+    // Reactions: f_int - f_ext summed over the constrained components of the
+    // vertices of each Dirichlet boundary id (a vertex shared by two
+    // Dirichlet boundaries counts for both).
     summary.reactions.clear();
     for (const auto &[id, mask] : prm.boundary_conditions.dirichlet)
       {
-        (void)mask;
         std::vector<bool>   counted(dof_handler.n_dofs(), false);
         std::vector<double> reaction(dim, 0.);
         for (const auto &cell : dof_handler.active_cell_iterators())
@@ -1026,12 +1027,13 @@ namespace pg
                 cell->face(f)->boundary_id() == id)
               for (const unsigned int v : cell->face(f)->vertex_indices())
                 for (unsigned int c = 0; c < dim; ++c)
-                  {
-                    const auto dof = cell->face(f)->vertex_dof_index(v, c);
-                    if (!counted[dof] && owned_dofs.is_element(dof))
-                      reaction[c] += force[dof];
-                    counted[dof] = true;
-                  }
+                  if (mask[c])
+                    {
+                      const auto dof = cell->face(f)->vertex_dof_index(v, c);
+                      if (!counted[dof] && owned_dofs.is_element(dof))
+                        reaction[c] += force[dof];
+                      counted[dof] = true;
+                    }
         Utilities::MPI::sum(reaction, comm, reaction);
         summary.reactions[id] = reaction;
       }

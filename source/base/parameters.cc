@@ -359,9 +359,9 @@ namespace pg
           "T (n . d^k) with d^k the unit-stress residual of the test "
           "functions actually used (dissertation eqs. 4.32-4.35, section "
           "7.1); this is what makes VC-corrected methods pass the patch "
-          "test, but without VC d^k misses part of the boundary area "
-          "(printed at start-up as 'particle load factor'). 'automatic': "
-          "'geometry' (the VC correction is not yet available).");
+          "test, but without VC d^k misses part of the boundary area (the "
+          "share is printed at start-up). 'automatic': 'geometry' (the VC "
+          "correction is not yet available).");
       }
       prm.leave_subsection();
     }

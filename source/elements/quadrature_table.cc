@@ -1,5 +1,7 @@
 #include <pg/elements/quadrature_table.h>
 
+#include <Eigen/Dense>
+
 namespace pg
 {
   template <int dim>
@@ -70,6 +72,65 @@ namespace pg
 
 
 
+  namespace
+  {
+    /**
+     * The tangent of a Bubnov-Galerkin table (test = trial) as dim^2 dense
+     * products: for every pair of components (i, k),
+     *   K^{ik} = sum_q B_q C_q^{ik} B_q^T = X^{ik} Y^T,
+     * with B_q the n x dim matrix of trial vectors at point q,
+     * C_q^{ik}_{jl} = w_q A_q,ijkl, X^{ik} = [B_1 C_1^{ik} | ... | B_Q
+     * C_Q^{ik}] and Y = [B_1 | ... | B_Q]. The inner dimension Q dim makes the
+     * product efficient, and the major symmetry A_ijkl = A_klij gives
+     * K^{ki} = (K^{ik})^T, so only i <= k is computed.
+     */
+    template <int dim>
+    void
+    bubnov_galerkin_tangent(const QuadratureTable<dim> &table,
+                            const std::vector<double>  &weighted_tangents,
+                            FullMatrix<double>         &tangent)
+    {
+      using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
+      constexpr unsigned int d4 = dim * dim * dim * dim;
+      const unsigned int     n  = table.n_nodes;
+      const unsigned int     nq = table.n_points();
+      Matrix                 Y(n, nq * dim), X(n, nq * dim), Kik(n, n);
+      for (unsigned int q = 0; q < nq; ++q)
+        for (unsigned int b = 0; b < n; ++b)
+          for (unsigned int l = 0; l < dim; ++l)
+            Y(b, q * dim + l) = table.trial[q * n + b][l];
+
+      const unsigned int n_dofs = n * dim;
+      double *const      K      = &tangent(0, 0);
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int k = i; k < dim; ++k)
+          {
+            for (unsigned int q = 0; q < nq; ++q)
+              {
+                const double *C = &weighted_tangents[q * d4];
+                for (unsigned int b = 0; b < n; ++b)
+                  for (unsigned int l = 0; l < dim; ++l)
+                    {
+                      double s = 0;
+                      for (unsigned int j = 0; j < dim; ++j)
+                        s += Y(b, q * dim + j) *
+                             C[((i * dim + j) * dim + k) * dim + l];
+                      X(b, q * dim + l) = s;
+                    }
+              }
+            Kik.noalias() = X * Y.transpose();
+            for (unsigned int a = 0; a < n; ++a)
+              for (unsigned int b = 0; b < n; ++b)
+                {
+                  K[(a * dim + i) * n_dofs + b * dim + k] = Kik(a, b);
+                  K[(b * dim + k) * n_dofs + a * dim + i] = Kik(a, b);
+                }
+          }
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   assemble_element(const QuadratureTable<dim>        &table,
@@ -79,6 +140,7 @@ namespace pg
                    FullMatrix<double>                *tangent)
   {
     constexpr unsigned int d3     = dim * dim * dim;
+    constexpr unsigned int d4     = dim * d3;
     const unsigned int     n      = table.n_nodes;
     const unsigned int     n_dofs = n * dim;
     AssertDimension(y.size(), n);
@@ -90,18 +152,35 @@ namespace pg
     double *const K =
       (tangent != nullptr && n_dofs > 0) ? &(*tangent)(0, 0) : nullptr;
     double *const r = residual.data();
+    // Bubnov-Galerkin tables get their tangent from dense products after
+    // the loop over the points; the others (PPG: two test vectors per
+    // point) contract point by point.
+    const bool dense_tangent = (K != nullptr && table.test_is_trial);
 
     Tensor<2, dim> P;
     Tensor<4, dim> A;
     // ab[b][i][j][k] = w_q A_ijkl B^{qb}_l, reused for every test node
-    std::vector<double> ab(tangent != nullptr ? n * d3 : 0);
+    std::vector<double> ab((K != nullptr && !dense_tangent) ? n * d3 : 0);
+    // w_q A_q of every point, for the dense products
+    std::vector<double> weighted_tangents(
+      dense_tangent ? table.n_points() * d4 : 0);
 
     for (unsigned int q = 0; q < table.n_points(); ++q)
       {
         const double          w = table.weights[q];
         const Tensor<1, dim> *B = &table.trial[q * n];
         const Tensor<2, dim>  F = deformation_gradient(table, q, y);
-        if (K != nullptr)
+        if (dense_tangent)
+          {
+            material.evaluate(F, P, A);
+            double *C = &weighted_tangents[q * d4];
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                for (unsigned int k = 0; k < dim; ++k)
+                  for (unsigned int l = 0; l < dim; ++l)
+                    C[((i * dim + j) * dim + k) * dim + l] = w * A[i][j][k][l];
+          }
+        else if (K != nullptr)
           {
             material.evaluate(F, P, A);
             double a_raw[dim][dim][dim][dim];
@@ -148,7 +227,7 @@ namespace pg
                   s += P[i][j] * T[j];
                 r[a * dim + i] += w * s;
               }
-            if (K == nullptr)
+            if (K == nullptr || dense_tangent)
               continue;
             double Ta[dim];
             for (unsigned int j = 0; j < dim; ++j)
@@ -170,6 +249,8 @@ namespace pg
               }
           }
       }
+    if (dense_tangent && table.n_points() > 0)
+      bubnov_galerkin_tangent(table, weighted_tangents, *tangent);
   }
 
 
