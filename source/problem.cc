@@ -54,9 +54,13 @@ namespace pg
     void
     setup();
 
+    /**
+     * Dirichlet and symmetry constraints; the Dirichlet values are those
+     * of the current load factor (set_load_factor), or zero if
+     * @p homogeneous.
+     */
     void
     make_constraints(AffineConstraints<double> &c,
-                     const double               t,
                      const bool                 homogeneous) const;
 
     void
@@ -69,8 +73,15 @@ namespace pg
     void
     update_full_solution();
 
+    /** Set the time of every parsed function to the load factor @p t. */
     void
-    postprocess(const unsigned int step, const double t);
+    set_load_factor(const double t) const;
+
+    /** Point values, reactions, errors, statistics, files of a step. */
+    void
+    postprocess(const unsigned int step,
+                const double       t,
+                const unsigned int newton_iterations);
 
     void
     compute_errors();
@@ -295,8 +306,8 @@ namespace pg
         point_locations.push_back(found);
       }
 
-    make_constraints(constraints, 0., false);
-    make_constraints(zero_constraints, 0., true);
+    make_constraints(constraints, false);
+    make_constraints(zero_constraints, true);
 
     DynamicSparsityPattern               dsp(relevant_dofs);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
@@ -427,7 +438,6 @@ namespace pg
   template <int dim>
   void
   Problem<dim>::Implementation::make_constraints(AffineConstraints<double> &c,
-                                                 const double               t,
                                                  const bool homogeneous) const
   {
     // Built from all cells on every rank (parallel::shared::Triangulation
@@ -438,9 +448,6 @@ namespace pg
 
     // Dirichlet first: where a Dirichlet and a symmetry condition meet, the
     // Dirichlet value wins.
-    auto &displacement =
-      const_cast<Functions::ParsedFunction<dim> &>(prm.prescribed_displacement);
-    displacement.set_time(t);
     for (const auto &[id, mask] : prm.boundary_conditions.dirichlet)
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
@@ -456,9 +463,10 @@ namespace pg
                       continue;
                     c.add_line(dof);
                     if (!homogeneous)
-                      c.set_inhomogeneity(
-                        dof,
-                        displacement.value(cell->face(f)->vertex(v), comp));
+                      c.set_inhomogeneity(dof,
+                                          prm.prescribed_displacement.value(
+                                            cell->face(f)->vertex(v),
+                                            comp));
                   }
 
     for (const types::boundary_id id : prm.boundary_conditions.symmetry)
@@ -528,6 +536,24 @@ namespace pg
 
   template <int dim>
   void
+  Problem<dim>::Implementation::set_load_factor(const double t) const
+  {
+    // ParsedFunction::set_time() is the only thing that changes the
+    // parameters during a run, so it is done here, in one place.
+    for (const Functions::ParsedFunction<dim> *function :
+         {&prm.prescribed_displacement,
+          &prm.traction,
+          &prm.body_force,
+          &prm.exact_solution})
+      const_cast<Functions::ParsedFunction<dim> *>(function)->set_time(t);
+    if (prm.exact_gradient)
+      prm.exact_gradient->set_time(t);
+  }
+
+
+
+  template <int dim>
+  void
   Problem<dim>::Implementation::update_full_solution()
   {
     solution = solution_owned;
@@ -564,7 +590,6 @@ namespace pg
       FEFaceValues<dim>           fe_face_values;
       QuadratureTable<dim>        table;
       std::vector<Tensor<1, dim>> y;
-      Vector<double>              internal;
     };
 
     struct Copy
@@ -643,9 +668,8 @@ namespace pg
     rhs   = 0;
     force = 0;
     failure.clear();
-    auto &traction = const_cast<Functions::ParsedFunction<dim> &>(prm.traction);
-    auto &body_force =
-      const_cast<Functions::ParsedFunction<dim> &>(prm.body_force);
+    const auto &traction   = prm.traction;
+    const auto &body_force = prm.body_force;
 
     const auto copier = [&](const Copy &copy) {
       if (copy.dofs.empty())
@@ -822,14 +846,8 @@ namespace pg
   Problem<dim>::Implementation::solve_step(const double  t,
                                            unsigned int &iterations)
   {
-    auto &displacement =
-      const_cast<Functions::ParsedFunction<dim> &>(prm.prescribed_displacement);
-    for (auto *function :
-         {&displacement,
-          &const_cast<Functions::ParsedFunction<dim> &>(prm.traction),
-          &const_cast<Functions::ParsedFunction<dim> &>(prm.body_force)})
-      function->set_time(t);
-    make_constraints(constraints, t, false);
+    set_load_factor(t);
+    make_constraints(constraints, false);
     constraints.distribute(solution_owned);
     update_full_solution();
 
@@ -925,15 +943,14 @@ namespace pg
   {
     // eq. (7.3): FE cells by Gauss quadrature, particles by their volume
     // with the trial gradient at the master.
-    auto &exact =
-      const_cast<Functions::ParsedFunction<dim> &>(prm.exact_solution);
-    const auto exact_gradient = [&](const Point<dim> &p) {
+    const auto &exact          = prm.exact_solution;
+    const auto  exact_gradient = [&](const Point<dim> &p) {
       Tensor<2, dim> G;
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           G[i][j] = prm.exact_gradient ?
-                      prm.exact_gradient->value(p, i * dim + j) :
-                      exact.gradient(p, i)[j];
+                       prm.exact_gradient->value(p, i * dim + j) :
+                       exact.gradient(p, i)[j];
       return G;
     };
     double                           e0 = 0, e1 = 0, n0 = 0, n1 = 0;
@@ -996,8 +1013,10 @@ namespace pg
 
   template <int dim>
   void
-  Problem<dim>::Implementation::postprocess(const unsigned int step,
-                                            const double       t)
+  Problem<dim>::Implementation::postprocess(
+    const unsigned int step,
+    const double       t,
+    const unsigned int newton_iterations)
   {
     // Point values from the Q1 interpolant (the nodal values at vertices).
     summary.points.clear();
@@ -1040,18 +1059,14 @@ namespace pg
 
     if (prm.compute_errors)
       {
-        auto &exact =
-          const_cast<Functions::ParsedFunction<dim> &>(prm.exact_solution);
-        exact.set_time(t);
-        if (prm.exact_gradient)
-          prm.exact_gradient->set_time(t);
+        set_load_factor(t);
         compute_errors();
       }
 
     // statistics.txt
     statistics.add_value("step", step);
     statistics.add_value("load factor", t);
-    statistics.add_value("Newton iterations", summary.newton_iterations);
+    statistics.add_value("Newton iterations", newton_iterations);
     statistics.add_value("residual",
                          summary.newton_residuals_last_step.empty() ?
                            0. :
@@ -1166,7 +1181,7 @@ namespace pg
     setup();
     update_full_solution();
     summary.load_steps = 0;
-    postprocess(0, 0.);
+    postprocess(0, 0., 0);
 
     const unsigned int n_steps = prm.loading.load_steps;
     double             t       = 0;
@@ -1215,7 +1230,7 @@ namespace pg
         summary.newton_iterations += step_iterations;
         summary.load_steps = step;
         summary.converged  = true;
-        postprocess(step, t);
+        postprocess(step, t, step_iterations);
       }
 
     // Final report: normalised where a natural reference exists.
