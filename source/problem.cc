@@ -31,6 +31,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -72,6 +73,20 @@ namespace pg
 
     void
     update_full_solution();
+
+    /**
+     * d^k of every particle from the current family tables (summed over
+     * all ranks), and the largest interior value for the summary.
+     */
+    void
+    compute_unit_stress_residual();
+
+    /**
+     * Solve the VC system once (pg-methods.md section 11.4-11.7), correct
+     * the test (PBG: and trial) functions and rebuild the family tables.
+     */
+    void
+    correct_variational_consistency();
 
     /** Set the time of every parsed function to the load factor @p t. */
     void
@@ -145,6 +160,9 @@ namespace pg
     LinearAlgebra::Vector       update, rhs, force;
     Vector<double>              u_full;
 
+    /** Tractions on meshfree faces load particles with T (n . d^k). */
+    bool traction_from_test_functions = false;
+
     std::mutex  failure_mutex;
     std::string failure;
 
@@ -210,8 +228,11 @@ namespace pg
         {
           if (!meshfree[cell->active_cell_index()])
             owned_fe_cells.push_back(cell);
-          else if (prm.boundary_conditions.particle_traction_area ==
-                     "geometry" &&
+          else if (!(prm.boundary_conditions.particle_traction_area ==
+                       "test functions" ||
+                     (prm.boundary_conditions.particle_traction_area ==
+                        "automatic" &&
+                      formulation.variational_consistency)) &&
                    has_neumann_face(cell))
             owned_meshfree_neumann_cells.push_back(cell);
         }
@@ -251,33 +272,11 @@ namespace pg
     time_shape += timer.wall_time();
     timer.restart();
 
-    // Unit-stress residual d^k, summed over the families of all ranks.
-    {
-      std::vector<double>         d(particles.n_particles() * dim, 0.);
-      std::vector<Tensor<1, dim>> local;
-      for (unsigned int f = 0; f < owned_families.size(); ++f)
-        {
-          const auto members = families.members(owned_families[f]);
-          local.assign(members.size(), Tensor<1, dim>());
-          add_unit_stress_residual(family_tables[f], local);
-          for (unsigned int a = 0; a < members.size(); ++a)
-            for (unsigned int c = 0; c < dim; ++c)
-              d[members[a] * dim + c] += local[a][c];
-        }
-      Utilities::MPI::sum(d, comm, d);
-      unit_stress.resize(particles.n_particles());
-      for (unsigned int k = 0; k < particles.n_particles(); ++k)
-        {
-          for (unsigned int c = 0; c < dim; ++c)
-            unit_stress[k][c] = d[k * dim + c];
-          if (particles.boundary_area_vectors(k).empty() &&
-              !particles.on_interface(k))
-            summary.max_interior_unit_stress_residual =
-              std::max(summary.max_interior_unit_stress_residual,
-                       unit_stress[k].norm() /
-                         std::pow(particles.spacing(k), dim - 1));
-        }
-    }
+    compute_unit_stress_residual();
+    traction_from_test_functions =
+      prm.boundary_conditions.particle_traction_area == "test functions" ||
+      (prm.boundary_conditions.particle_traction_area == "automatic" &&
+       formulation.variational_consistency);
 
     // Locate the reference points once (every rank knows all cells).
     const MappingQ1<dim> mapping;
@@ -331,12 +330,18 @@ namespace pg
                                                relevant_dofs);
     matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
     summary.matrix_nonzeros = matrix.n_nonzero_elements();
+    rhs.reinit(owned_dofs, comm);
+    update.reinit(owned_dofs, comm);
+    if (formulation.variational_consistency && particles.n_particles() > 0)
+      {
+        Timer vc_timer;
+        correct_variational_consistency();
+        time_shape += vc_timer.wall_time();
+      }
 
     solution.reinit(owned_dofs, relevant_dofs, comm);
     solution_owned.reinit(owned_dofs, comm);
     converged_solution.reinit(owned_dofs, comm);
-    update.reinit(owned_dofs, comm);
-    rhs.reinit(owned_dofs, comm);
     force.reinit(owned_dofs, comm);
     u_full.reinit(dof_handler.n_dofs());
     time_setup += timer.wall_time();
@@ -399,10 +404,21 @@ namespace pg
             percent << std::fixed << std::setprecision(1)
                     << 100. * seen / geometric;
             pcout << "  particle traction area: "
-                  << prm.boundary_conditions.particle_traction_area
+                  << (traction_from_test_functions ? "test functions" :
+                                                     "geometry")
                   << " (the test functions see " << percent.str()
                   << " % of the Neumann area)\n";
           }
+      }
+    if (formulation.variational_consistency)
+      {
+        std::ostringstream vc;
+        vc << std::scientific << std::setprecision(1)
+           << summary.max_interior_unit_stress_residual
+           << ", max |alpha| h = " << std::fixed << std::setprecision(2)
+           << summary.max_correction_factor;
+        pcout << "  VC correction:   interior |d^k|/h^(dim-1) <= " << vc.str()
+              << "\n";
       }
     pcout << "  DoFs:            " << dof_handler.n_dofs() << "\n"
           << "  matrix nonzeros: " << summary.matrix_nonzeros << std::endl;
@@ -530,6 +546,243 @@ namespace pg
                 }
       }
     c.close();
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::compute_unit_stress_residual()
+  {
+    std::vector<double>         d(particles.n_particles() * dim, 0.);
+    std::vector<Tensor<1, dim>> local;
+    for (unsigned int f = 0; f < owned_families.size(); ++f)
+      {
+        const auto members = families.members(owned_families[f]);
+        local.assign(members.size(), Tensor<1, dim>());
+        add_unit_stress_residual(family_tables[f], local);
+        for (unsigned int a = 0; a < members.size(); ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            d[members[a] * dim + c] += local[a][c];
+      }
+    Utilities::MPI::sum(d, comm, d);
+    unit_stress.resize(particles.n_particles());
+    summary.max_interior_unit_stress_residual = 0;
+    for (unsigned int k = 0; k < particles.n_particles(); ++k)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          unit_stress[k][c] = d[k * dim + c];
+        if (particles.boundary_area_vectors(k).empty() &&
+            !particles.on_interface(k))
+          summary.max_interior_unit_stress_residual =
+            std::max(summary.max_interior_unit_stress_residual,
+                     unit_stress[k].norm() /
+                       std::pow(particles.spacing(k), dim - 1));
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::correct_variational_consistency()
+  {
+    using VCBoundary     = FormulationCode::VCBoundary;
+    const unsigned int n = particles.n_particles();
+    // How the rows of every particle read (section 11.5):
+    //   interior:   d^k(alpha) = target^k: 0, the area vector for p, and
+    //               on the FE/meshfree interface the area vector of the
+    //               meshfree side, so that FE and PG contributions of a
+    //               constant stress cancel there (coupled patch test),
+    //   tangential: n . alpha^k = 0 and t . d^k(alpha) = 0 (sn),
+    //   fixed:      alpha^k = 0 (s; sn at edges and corners; p at d+1
+    //               particles).
+    enum class Row
+    {
+      interior,
+      tangential,
+      fixed
+    };
+    std::vector<Row>            kind(n, Row::interior);
+    std::vector<Tensor<2, dim>> R(n, unit_symmetric_tensor<dim>());
+    std::vector<Tensor<1, dim>> normal(n), target(n);
+    std::vector<unsigned int>   surface;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const auto &areas = particles.boundary_area_vectors(k);
+        if (particles.on_interface(k))
+          {
+            // full target: the interface area plus any surface area
+            target[k] = particles.interface_area_vector(k);
+            for (const auto &area : areas)
+              target[k] += area.second;
+            continue;
+          }
+        if (areas.empty())
+          continue;
+        surface.push_back(k);
+        for (const auto &area : areas)
+          normal[k] += area.second;
+        if (formulation.vc_boundary == VCBoundary::p)
+          target[k] = normal[k];
+        normal[k] /= normal[k].norm();
+        if (formulation.vc_boundary == VCBoundary::s ||
+            (formulation.vc_boundary == VCBoundary::sn &&
+             particles.at_corner(k)))
+          kind[k] = Row::fixed;
+        else if (formulation.vc_boundary == VCBoundary::sn)
+          {
+            // rows: [0; t_1; t_2], the tangents orthonormal to n
+            kind[k] = Row::tangential;
+            R[k]    = Tensor<2, dim>();
+            Tensor<1, dim> t;
+            if constexpr (dim == 2)
+              {
+                t[0]    = -normal[k][1];
+                t[1]    = normal[k][0];
+                R[k][1] = t;
+              }
+            else
+              {
+                unsigned int axis = 0;
+                for (unsigned int c = 1; c < dim; ++c)
+                  if (std::abs(normal[k][c]) < std::abs(normal[k][axis]))
+                    axis = c;
+                t = Point<dim>::unit_vector(axis);
+                t -= (t * normal[k]) * normal[k];
+                t /= t.norm();
+                R[k][1] = t;
+                R[k][2] = cross_product_3d(normal[k], t);
+              }
+          }
+      }
+    // Without a free surface (option p, or particles embedded in finite
+    // elements) every row has a full target and the system has the nullity
+    // d (d + 1) of the discrete Gauss identities. Fixing alpha at d + 1
+    // particles spread over the boundary removes it (one particle for
+    // PPG2, see below); the dropped equations
+    // then hold automatically, since the targets obey the same identities.
+    bool free_surface = false;
+    for (unsigned int k = 0; k < n; ++k)
+      free_surface = free_surface || (kind[k] != Row::interior);
+    for (unsigned int k = 0; k < n; ++k)
+      if (particles.on_interface(k) &&
+          particles.boundary_area_vectors(k).empty())
+        surface.push_back(k);
+    if (formulation.vc_boundary == VCBoundary::p || !free_surface)
+      {
+        AssertThrow(surface.size() > dim,
+                    ExcMessage("The VC correction needs at least dim + 1 "
+                               "particles on the boundary of the meshfree "
+                               "region."));
+        std::vector<unsigned int> chosen = {surface[0]};
+        const auto distance_to_chosen    = [&](const unsigned int k) {
+          // distance to the affine hull of the chosen particles
+          std::vector<Tensor<1, dim>> basis;
+          for (unsigned int i = 1; i < chosen.size(); ++i)
+            {
+              Tensor<1, dim> e =
+                particles.position(chosen[i]) - particles.position(chosen[0]);
+              for (const auto &b : basis)
+                e -= (e * b) * b;
+              if (e.norm() > 0)
+                basis.push_back(e / e.norm());
+            }
+          Tensor<1, dim> r =
+            particles.position(k) - particles.position(chosen[0]);
+          for (const auto &b : basis)
+            r -= (r * b) * b;
+          return r.norm();
+        };
+        // PPG2 test functions keep only sum_k d^k = 0 (section 11.4): its
+        // nullity is d, so one particle is fixed.
+        const unsigned int n_fixed =
+          (formulation.method == FormulationCode::Method::ppg2 ? 1 : dim + 1);
+        while (chosen.size() < n_fixed)
+          {
+            unsigned int best = surface[0];
+            for (const unsigned int k : surface)
+              if (distance_to_chosen(k) > distance_to_chosen(best))
+                best = k;
+            chosen.push_back(best);
+          }
+        for (const unsigned int k : chosen)
+          kind[k] = Row::fixed;
+      }
+
+    matrix = 0;
+    rhs    = 0;
+    update = 0;
+    for (const unsigned int k : owned_families)
+      family_elements->for_each_correction_block(
+        k,
+        [&](const unsigned int    a,
+            const unsigned int    f,
+            const Tensor<2, dim> &C) {
+          if (kind[a] == Row::fixed)
+            return;
+          const Tensor<2, dim> RC = R[a] * C;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int c = 0; c < dim; ++c)
+              if (RC[i][c] != 0.)
+                matrix.add(particles.dof(a, i), particles.dof(f, c), RC[i][c]);
+        });
+    std::vector<bool> is_particle_dof(dof_handler.n_dofs(), false);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          is_particle_dof[particles.dof(k, c)] = true;
+        if (!owned_dofs.is_element(particles.dof(k, 0)))
+          continue;
+        const Tensor<1, dim> r = R[k] * (target[k] - unit_stress[k]);
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            const auto row = particles.dof(k, i);
+            if (kind[k] == Row::fixed)
+              matrix.add(row, row, 1.);
+            else if (kind[k] == Row::tangential && i == 0)
+              for (unsigned int c = 0; c < dim; ++c)
+                matrix.add(row, particles.dof(k, c), normal[k][c]);
+            else
+              rhs(row) = r[i];
+          }
+      }
+    for (const auto dof : owned_dofs)
+      if (!is_particle_dof[dof])
+        matrix.add(dof, dof, 1.);
+    matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::insert);
+
+    Parameters::LinearSolver direct;
+    direct.type      = "direct";
+    direct.tolerance = 0;
+    solve_linear_system(direct, dof_handler, matrix, update, rhs);
+    LinearAlgebra::Vector ghosted(owned_dofs, relevant_dofs, comm);
+    ghosted = update;
+    std::vector<Tensor<1, dim>> alpha(n);
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int c = 0; c < dim; ++c)
+        alpha[k][c] = ghosted[particles.dof(k, c)];
+    AssertThrow(std::all_of(alpha.begin(),
+                            alpha.end(),
+                            [](const Tensor<1, dim> &a) {
+                              return std::isfinite(a.norm());
+                            }),
+                ExcMessage("The VC system is singular: change the VC "
+                           "boundary option of 'Formulation' in subsection "
+                           "'Discretization' (p, s or sn)."));
+
+    // The size of the correction, relative to the gradients (~1/h): large
+    // values mean strongly modified test functions.
+    summary.max_correction_factor = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      summary.max_correction_factor =
+        std::max(summary.max_correction_factor,
+                 alpha[k].norm() * particles.spacing(k));
+    family_elements->set_correction_factors(alpha);
+    for (unsigned int f = 0; f < owned_families.size(); ++f)
+      family_elements->build(owned_families[f], family_tables[f]);
+    compute_unit_stress_residual();
   }
 
 
@@ -792,9 +1045,8 @@ namespace pg
     // traction area = test functions', the traction times the normal part
     // of the unit-stress residual d^k, the area vector of the test
     // functions actually used (section 8.2, eqs. 4.32-4.35).
-    const bool test_function_area =
-      (prm.boundary_conditions.particle_traction_area == "test functions");
-    Vector<double>                       f(dim), local(dim);
+    const bool     test_function_area = traction_from_test_functions;
+    Vector<double> f(dim), local(dim);
     std::vector<types::global_dof_index> dofs(dim);
     for (const unsigned int k : owned_families)
       {
@@ -807,7 +1059,12 @@ namespace pg
             if (is_neumann(id))
               {
                 traction.vector_value(particles.position(k), f);
-                const double a = unit_stress[k] * (area / area.norm());
+                // On the FE/meshfree interface the VC targets d^k are the
+                // geometric area vectors (interface plus surface part), so
+                // the consistent load there is the geometric one.
+                const double a = particles.on_interface(k) ?
+                                   area.norm() :
+                                   unit_stress[k] * (area / area.norm());
                 for (unsigned int c = 0; c < dim; ++c)
                   local(c) += a * f(c);
               }

@@ -43,6 +43,8 @@ namespace pg
     std::map<std::string, double> timing;
     /** Largest |d^k| at interior particles, divided by spacing^(dim-1). */
     double max_interior_unit_stress_residual = 0;
+    /** Largest VC correction factor |alpha^k| times the spacing. */
+    double max_correction_factor = 0;
   };
 
   /**

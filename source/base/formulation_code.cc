@@ -8,9 +8,12 @@ namespace pg
   namespace
   {
     const std::string valid_parts =
-      "Valid codes read '[BC]<method> <points> [TL]' with <method> = PBG, "
-      "PPG (= PPG1), PPG1 or PPG2 and <points> = Unl or U1 (U1 with PBG "
-      "only), e.g. 'BCPBG Unl TL', 'PPG Unl', 'PBG U1'; or 'FEM'.";
+      "Valid codes read '[VC][BC]<method> [V<n><b>] <points> [TL]' with "
+      "<method> = PBG, PPG (= PPG1), PPG1 or PPG2, the VC correction "
+      "function V1, V3 or V5 (default V3 for PPG, V5 for PBG) and its "
+      "boundary option <b> = p, s or sn (default sn), and <points> = Unl or "
+      "U1 (U1 with PBG only), e.g. 'BCPBG Unl TL', 'VCPPG V3sn Unl', "
+      "'VCBCPBG V5sn Unl TL', 'PBG U1'; or 'FEM'.";
 
 
 
@@ -69,17 +72,27 @@ namespace pg
     result.text.clear();
     for (const std::string &w : words)
       result.text += (result.text.empty() ? "" : " ") + w;
-    result.bond_correction = false;
-    result.points          = FormulationCode::Points::unl;
+    result.bond_correction         = false;
+    result.points                  = FormulationCode::Points::unl;
+    result.variational_consistency = false;
+    result.vc_boundary             = FormulationCode::VCBoundary::sn;
+    bool have_correction_function  = false;
 
     // The first word: corrections, then the method.
     std::string head = words[0];
     for (;;)
       {
-        if (starts_with(head, "VC2") || starts_with(head, "VC"))
+        if (starts_with(head, "VC2"))
           reject(code,
-                 "the variational-consistency correction (VC, VC2) is not "
-                 "yet available.");
+                 "the second-order variational-consistency correction (VC2) "
+                 "is not yet available.");
+        else if (starts_with(head, "VC"))
+          {
+            if (result.variational_consistency)
+              reject(code, "VC appears twice.");
+            result.variational_consistency = true;
+            head                           = head.substr(2);
+          }
         else if (starts_with(head, "BC"))
           {
             if (result.bond_correction)
@@ -99,7 +112,7 @@ namespace pg
     else if (head == "FEM")
       {
         result.method = FormulationCode::Method::fem;
-        if (result.bond_correction)
+        if (result.bond_correction || result.variational_consistency)
           reject(code, "FEM takes no corrections.");
         if (words.size() > 1)
           reject(code, "FEM takes no further parts.");
@@ -131,10 +144,31 @@ namespace pg
                  "the updated Lagrangian form (UL) is not yet available; "
                  "use TL.");
         else if (w.size() >= 2 && w[0] == 'V' && w[1] >= '1' && w[1] <= '5')
-          reject(code,
-                 "the correction function <" + w +
-                   "> belongs to the VC correction, which is not yet "
-                   "available.");
+          {
+            if (have_correction_function)
+              reject(code, "it names two VC correction functions.");
+            have_correction_function = true;
+            if (w[1] == '2' || w[1] == '4')
+              reject(code,
+                     "the correction functions V2 and V4 need second-order "
+                     "(WLS2) shape functions, which are not yet available; "
+                     "use V1, V3 or V5.");
+            result.correction_function =
+              (w[1] == '1' ? FormulationCode::CorrectionFunction::v1 :
+               w[1] == '3' ? FormulationCode::CorrectionFunction::v3 :
+                             FormulationCode::CorrectionFunction::v5);
+            const std::string option = w.substr(2);
+            if (option == "p")
+              result.vc_boundary = FormulationCode::VCBoundary::p;
+            else if (option == "s")
+              result.vc_boundary = FormulationCode::VCBoundary::s;
+            else if (option == "sn" || option.empty())
+              result.vc_boundary = FormulationCode::VCBoundary::sn;
+            else
+              reject(code,
+                     "the VC boundary option <" + option +
+                       "> is unknown; use p, s or sn.");
+          }
         else if (w == "U2" || w == "UnlP0" || w == "IUnlP0" || w == "U2P1" ||
                  w == "U2P1C" || w == "Unl+P1C" || w == "U1SUnl" ||
                  w == "U1SIG")
@@ -143,6 +177,15 @@ namespace pg
           reject(code, "the part <" + w + "> is unknown.");
       }
 
+    if (have_correction_function && !result.variational_consistency)
+      reject(code,
+             "a correction function (V1, V3, V5) needs the VC prefix, e.g. "
+             "'VCPPG V3sn Unl'.");
+    if (result.variational_consistency && !have_correction_function)
+      result.correction_function =
+        (result.method == FormulationCode::Method::pbg ?
+           FormulationCode::CorrectionFunction::v5 :
+           FormulationCode::CorrectionFunction::v3);
     if (result.points == FormulationCode::Points::u1 &&
         result.method != FormulationCode::Method::pbg)
       reject(code,

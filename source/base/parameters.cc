@@ -184,12 +184,17 @@ namespace pg
           "Formulation",
           "BCPBG Unl TL",
           Patterns::Anything(),
-          "The method, as the dissertation's code (Table 7.1), or FEM. "
-          "Available: [BC]PBG | [BC]PPG (= PPG1, eq. 4.21) | [BC]PPG2 (eq. "
-          "4.22), with Unl (shape functions at every family member) or U1 "
-          "(PBG at the master only: classical correspondence), and TL. BC "
-          "switches the bond correction (eq. 5.55) on. FEM uses Q1 elements "
-          "everywhere. Example: 'BCPBG Unl TL'.");
+          "The method, as the dissertation's code (Table 7.1), or FEM: "
+          "[VC][BC]<method> [V<n><b>] <points> [TL]. <method>: PBG (eq. "
+          "4.30), PPG (= PPG1, eq. 4.21) or PPG2 (eq. 4.22). <points>: Unl "
+          "(shape functions at every family member) or U1 (PBG at the master "
+          "only: classical correspondence). BC switches the bond correction "
+          "(eq. 5.55) on; recommended for every first-order formulation under "
+          "finite strain. VC switches the variational-consistency correction "
+          "on (section 5.3.2) with the correction function V1, V3 or V5 "
+          "(default V3 for PPG, V5 for PBG) and the boundary option p, s or "
+          "sn (default sn). FEM uses Q1 elements everywhere. Examples: "
+          "'BCPBG Unl TL', 'VCBCPBG V5sn Unl', 'VCBCPPG V3sn Unl', 'PBG U1'.");
         prm.declare_entry("Shape functions",
                           "MTE1",
                           Patterns::Selection("MTE1|MLS1|WLS1|WTE1"),
@@ -360,8 +365,8 @@ namespace pg
           "functions actually used (dissertation eqs. 4.32-4.35, section "
           "7.1); this is what makes VC-corrected methods pass the patch "
           "test, but without VC d^k misses part of the boundary area (the "
-          "share is printed at start-up). 'automatic': 'geometry' (the VC "
-          "correction is not yet available).");
+          "share is printed at start-up). 'automatic': 'test functions' "
+          "for VC-corrected formulations, 'geometry' otherwise.");
       }
       prm.leave_subsection();
     }
@@ -410,8 +415,6 @@ namespace pg
           parse_ids(prm.get("Symmetry"), "Boundary conditions/Symmetry");
         neumann = parse_ids(prm.get("Neumann"), "Boundary conditions/Neumann");
         particle_traction_area = prm.get("Particle traction area");
-        if (particle_traction_area == "automatic")
-          particle_traction_area = "geometry";
       }
       prm.leave_subsection();
     }

@@ -1,5 +1,6 @@
 #include <pg/base/exceptions.h>
 #include <pg/elements/family_elements.h>
+#include <pg/shape_functions/correction_functions.h>
 
 #include <algorithm>
 #include <sstream>
@@ -78,6 +79,70 @@ namespace pg
         checked_gradients(k, geometry(k), 0, master[k]);
         ShapeFunctions::make_effective(master[k]);
       }
+    master_test = master;
+    alpha.clear();
+    if (formulation.variational_consistency)
+      {
+        phi.resize(families.n_families());
+        for (unsigned int k = 0; k < families.n_families(); ++k)
+          phi[k] =
+            ShapeFunctions::correction_function(formulation.correction_function,
+                                                geometry(k));
+      }
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  FamilyElements<dim>::projector(
+    const ShapeFunctions::FamilyGeometry<dim> &geometry,
+    const unsigned int                         point) const
+  {
+    Tensor<2, dim> Q = unit_symmetric_tensor<dim>();
+    if (formulation.correction_function ==
+          FormulationCode::CorrectionFunction::v5 &&
+        point != 0)
+      {
+        const Tensor<1, dim> &b = geometry.bonds[point];
+        Q -= outer_product(b, b) / b.norm_square();
+      }
+    return Q;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  FamilyElements<dim>::correction(
+    const unsigned int                         k,
+    const ShapeFunctions::FamilyGeometry<dim> &geometry,
+    const unsigned int                         point,
+    const unsigned int                         a) const
+  {
+    return phi[k][a] * (projector(geometry, point) * alpha[k]);
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyElements<dim>::set_correction_factors(
+    const std::vector<Tensor<1, dim>> &factors)
+  {
+    Assert(formulation.variational_consistency, ExcInternalError());
+    AssertDimension(factors.size(), families.n_families());
+    alpha = factors;
+    // The master gradients: PPG corrects its test functions only, PBG the
+    // common trial and test functions (at the master Q = 1).
+    for (unsigned int k = 0; k < families.n_families(); ++k)
+      for (unsigned int a = 0; a < master[k].size(); ++a)
+        {
+          const Tensor<1, dim> c = phi[k][a] * alpha[k];
+          master_test[k][a]      = master[k][a] + c;
+          if (formulation.method == FormulationCode::Method::pbg)
+            master[k][a] += c;
+        }
   }
 
 
@@ -104,11 +169,16 @@ namespace pg
     std::vector<Tensor<1, dim>>               g;
 
     // Effective trial gradients of family k at its member j.
-    const auto trial_at = [&](const unsigned int j) {
+    const bool corrected = !alpha.empty();
+    const auto trial_at  = [&](const unsigned int j) {
       checked_gradients(k, geom, j, g);
       if (formulation.bond_correction && j != 0)
         ShapeFunctions::apply_bond_correction(geom, j, g);
       ShapeFunctions::make_effective(g);
+      // PBG: test = trial, both VC-corrected (eq. 5.56)
+      if (corrected && formulation.method == Method::pbg)
+        for (unsigned int a = 0; a < n; ++a)
+          g[a] += correction(k, geom, j, a);
     };
 
     if (formulation.method == Method::pbg)
@@ -146,13 +216,13 @@ namespace pg
             Assert(found != family_j.end() && *found == k,
                    ExcMessage("The families are not pairwise."));
             const Tensor<1, dim> &t =
-              master[members[j]][found - family_j.begin()];
+              master_test[members[j]][found - family_j.begin()];
             table.add_test_vector(0, t);
             table.add_test_vector(j, -t);
           }
         else
           {
-            const Tensor<1, dim> &t = master[k][j];
+            const Tensor<1, dim> &t = master_test[k][j];
             table.add_test_vector(j, t);
             table.add_test_vector(0, -t);
           }

@@ -43,6 +43,7 @@ namespace pg
     dofs.resize(n);
     area_vectors.assign(n, {});
     interface.resize(n);
+    interface_areas.assign(n, Tensor<1, dim>());
     for (unsigned int k = 0; k < n; ++k)
       {
         positions[k] = tria.get_vertices()[vertices[k]];
@@ -55,12 +56,13 @@ namespace pg
     const QGauss<dim>     quadrature(2);
     const QGauss<dim - 1> face_quadrature(2);
     FEValues<dim> fe_values(fe, quadrature, update_values | update_JxW_values);
-    FEFaceValues<dim>         fe_face_values(fe,
+    FEFaceValues<dim>                        fe_face_values(fe,
                                      face_quadrature,
                                      update_values | update_JxW_values |
                                        update_normal_vectors);
-    std::vector<unsigned int> n_edges(n, 0);
-    std::vector<bool>         edge_done(tria.n_raw_lines(), false);
+    std::vector<unsigned int>                n_edges(n, 0);
+    std::vector<std::vector<Tensor<1, dim>>> face_normals(n);
+    std::vector<bool> edge_done(tria.n_raw_lines(), false);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (meshfree[cell->active_cell_index()])
@@ -92,7 +94,21 @@ namespace pg
             }
 
           for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary())
+            if (!cell->face(f)->at_boundary() &&
+                !meshfree[cell->neighbor(f)->active_cell_index()])
+              {
+                fe_face_values.reinit(
+                  typename Triangulation<dim>::active_cell_iterator(cell),
+                  f);
+                for (const unsigned int i : cell->vertex_indices())
+                  for (const unsigned int q :
+                       fe_face_values.quadrature_point_indices())
+                    interface_areas[particle_of_vertex[cell->vertex_index(
+                      i)]] += fe_face_values.shape_value(i, q) *
+                              fe_face_values.normal_vector(q) *
+                              fe_face_values.JxW(q);
+              }
+            else if (cell->face(f)->at_boundary())
               {
                 fe_face_values.reinit(
                   typename Triangulation<dim>::active_cell_iterator(cell),
@@ -107,14 +123,45 @@ namespace pg
                            fe_face_values.normal_vector(q) *
                            fe_face_values.JxW(q);
                     if (a.norm() > 0)
-                      area_vectors[particle_of_vertex[cell->vertex_index(i)]]
-                                  [id] += a;
+                      {
+                        const unsigned int k =
+                          particle_of_vertex[cell->vertex_index(i)];
+                        area_vectors[k][id] += a;
+                        face_normals[k].push_back(a / a.norm());
+                      }
                   }
               }
         }
 
+    corner.assign(n, false);
     for (unsigned int k = 0; k < n; ++k)
-      spacings[k] /= n_edges[k];
+      {
+        spacings[k] /= n_edges[k];
+        for (const auto &a : face_normals[k])
+          for (const auto &b : face_normals[k])
+            if (a * b < std::cos(numbers::PI / 6))
+              corner[k] = true;
+      }
+  }
+
+
+
+  template <int dim>
+  const Tensor<1, dim> &
+  ParticleSet<dim>::interface_area_vector(const unsigned int k) const
+  {
+    AssertIndexRange(k, interface_areas.size());
+    return interface_areas[k];
+  }
+
+
+
+  template <int dim>
+  bool
+  ParticleSet<dim>::at_corner(const unsigned int k) const
+  {
+    AssertIndexRange(k, corner.size());
+    return corner[k];
   }
 
 

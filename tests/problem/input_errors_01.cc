@@ -58,7 +58,9 @@ main(int argc, char **argv)
         "subsection Discretization\n  set Formulation = XPBG Unl\nend\n");
   check("formulation not yet available",
         "subsection Discretization\n"
-        "  set Formulation = VCBCPBG V5sn Unl TL\nend\n");
+        "  set Formulation = VC2PPG V1s U2\nend\n");
+  check("correction function without VC",
+        "subsection Discretization\n  set Formulation = PPG V3sn Unl\nend\n");
   check("contradictory formulation",
         "subsection Discretization\n  set Formulation = PPG U1\nend\n");
   check("incompressible material",

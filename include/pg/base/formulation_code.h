@@ -32,8 +32,28 @@ namespace pg
       u1   //!< the master only (underintegrated PBG = classical correspondence)
     };
 
+    /** The VC correction function (eqs. 5.60-5.64). */
+    enum class CorrectionFunction
+    {
+      v1, //!< constant, eq. (5.60)
+      v3, //!< MLS1 value at the master minus delta, eq. (5.62)
+      v5  //!< V3 with the bond projector, eq. (5.64)
+    };
+
+    /** Boundary treatment of the VC system (section 11.5). */
+    enum class VCBoundary
+    {
+      p, //!< correction factors fixed at d+1 particles, geometric targets
+      s, //!< correction factors fixed at all surface particles
+      sn //!< normal component fixed at surface particles (default)
+    };
+
     Method method;
     Points points;
+    /** First-order variational consistency (section 11). */
+    bool               variational_consistency;
+    CorrectionFunction correction_function;
+    VCBoundary         vc_boundary;
     /** Bond correction (eq. 5.55) of the trial functions. */
     bool bond_correction;
     /** The code as the user wrote it, normalised to single spaces. */

@@ -106,7 +106,7 @@ namespace pg
        * 'geometry' (the FE-consistent load, integral of T N_k over the
        * faces) or 'test functions' (T (n . d^k), with d^k the unit-stress
        * residual of the test functions actually used, eq. 4.32-4.35).
-       * 'automatic' is 'geometry' until the VC correction is available.
+       * 'automatic': 'test functions' with VC, 'geometry' without.
        */
       std::string particle_traction_area;
 

@@ -8,6 +8,7 @@
 #include <pg/mesh/particle_set.h>
 #include <pg/shape_functions/shape_functions.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace pg
@@ -47,7 +48,11 @@ namespace pg
     void
     initialize();
 
-    /** Build the table of family @p k (throws like initialize()). */
+    /**
+     * Build the table of family @p k (throws like initialize()). After
+     * set_correction_factors() the test functions (and for PBG the trial
+     * functions, which are the same) carry the VC correction.
+     */
     void
     build(const unsigned int k, QuadratureTable<dim> &table) const;
 
@@ -58,6 +63,25 @@ namespace pg
     const std::vector<Tensor<1, dim>> &
     master_gradients(const unsigned int k) const;
 
+    /**
+     * The blocks of the VC system (pg-methods.md section 11.4) that family
+     * @p k contributes: the unit-stress residual depends linearly on the
+     * correction factors, d^a(alpha) = d^a(0) + sum_f C^{af} alpha^f, and
+     * @p add(a, f, C) is called for every block of this family (a and f are
+     * particle indices). Needs the VC formulation.
+     */
+    template <typename Callback>
+    void
+    for_each_correction_block(const unsigned int k, const Callback &add) const;
+
+    /**
+     * Store the correction factors alpha^k of all particles (the solution
+     * of the VC system) and correct the master gradients; from now on
+     * build() returns corrected tables.
+     */
+    void
+    set_correction_factors(const std::vector<Tensor<1, dim>> &alpha);
+
     /** The bonds and volumes of family @p k. */
     ShapeFunctions::FamilyGeometry<dim>
     geometry(const unsigned int k) const;
@@ -66,6 +90,22 @@ namespace pg
     static constexpr double maximum_condition_number = 1e10;
 
   private:
+    /**
+     * The VC correction of a gradient of family @p k at member @p point for
+     * node @p a: phi^{ka} Q^{k,point} alpha^k, with the bond projector Q
+     * for V5 at points other than the master (identity otherwise).
+     */
+    Tensor<1, dim>
+    correction(const unsigned int                         k,
+               const ShapeFunctions::FamilyGeometry<dim> &geometry,
+               const unsigned int                         point,
+               const unsigned int                         a) const;
+
+    /** The bond projector 1 - n (x) n of V5 at @p point (1 otherwise). */
+    Tensor<2, dim>
+    projector(const ShapeFunctions::FamilyGeometry<dim> &geometry,
+              const unsigned int                         point) const;
+
     /** Raw gradients at @p point with the conditioning check. */
     void
     checked_gradients(const unsigned int                         k,
@@ -73,13 +113,76 @@ namespace pg
                       const unsigned int                         point,
                       std::vector<Tensor<1, dim>>               &g) const;
 
-    const ParticleSet<dim>                  &particles;
-    const FamilySet<dim>                    &families;
-    const FormulationCode                    formulation;
-    const ShapeFunctions::Base               base;
-    const double                             weight_exponent;
+    const ParticleSet<dim>    &particles;
+    const FamilySet<dim>      &families;
+    const FormulationCode      formulation;
+    const ShapeFunctions::Base base;
+    const double               weight_exponent;
+    /** Trial gradients at the master of every family. */
     std::vector<std::vector<Tensor<1, dim>>> master;
+    /** Test gradients at the master (PPG): the trial ones, VC-corrected. */
+    std::vector<std::vector<Tensor<1, dim>>> master_test;
+    /** Effective VC correction function values per family member. */
+    std::vector<std::vector<double>> phi;
+    /** VC correction factors per particle; empty: uncorrected. */
+    std::vector<Tensor<1, dim>> alpha;
   };
+
+
+
+  template <int dim>
+  template <typename Callback>
+  void
+  FamilyElements<dim>::for_each_correction_block(const unsigned int k,
+                                                 const Callback    &add) const
+  {
+    using Method = FormulationCode::Method;
+    Assert(formulation.variational_consistency, ExcInternalError());
+    const auto         members = families.members(k);
+    const unsigned int n       = members.size();
+    const auto         geom    = geometry(k);
+    if (formulation.method == Method::pbg)
+      {
+        // d^a += w_q phi^{ka} Q^{kq} alpha^k at every point q of family k
+        double family_volume = 0;
+        for (const double v : geom.volumes)
+          family_volume += v;
+        const bool u1 = (formulation.points == FormulationCode::Points::u1);
+        const unsigned int n_points = u1 ? 1 : n;
+        for (unsigned int q = 0; q < n_points; ++q)
+          {
+            const double w =
+              u1 ? geom.volumes[0] :
+                   geom.volumes[0] * geom.volumes[q] / family_volume;
+            const Tensor<2, dim> Q = projector(geom, q);
+            for (unsigned int a = 0; a < n; ++a)
+              add(members[a], k, (w * phi[k][a]) * Q);
+          }
+        return;
+      }
+    const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();
+    for (unsigned int j = 1; j < n; ++j)
+      {
+        const double w = geom.volumes[j];
+        if (formulation.method == Method::ppg1)
+          {
+            // test vectors +-(g^{jjk} + phi^{jk} alpha^j) at nodes k and j
+            const auto family_j = families.members(members[j]);
+            const auto found =
+              std::lower_bound(family_j.begin() + 1, family_j.end(), k);
+            const double c = w * phi[members[j]][found - family_j.begin()];
+            add(k, members[j], c * identity);
+            add(members[j], members[j], -c * identity);
+          }
+        else
+          {
+            // test vectors +-(g^{kkj} + phi^{kj} alpha^k) at nodes j and k
+            const double c = w * phi[k][j];
+            add(members[j], k, c * identity);
+            add(k, k, -c * identity);
+          }
+      }
+  }
 } // namespace pg
 
 #endif

@@ -69,9 +69,25 @@ namespace pg
     const std::map<types::boundary_id, Tensor<1, dim>> &
     boundary_area_vectors(const unsigned int k) const;
 
+    /**
+     * Whether the boundary faces at particle k have normals that differ by
+     * more than 30 degrees (an edge or a corner of the body), where a nodal
+     * normal is ambiguous.
+     */
+    bool
+    at_corner(const unsigned int k) const;
+
     /** Whether particle k is also a vertex of a finite element cell. */
     bool
     on_interface(const unsigned int k) const;
+
+    /**
+     * Area vector of particle k on the FE/meshfree interface: the integral
+     * of N_k n over the faces between meshfree and finite element cells,
+     * with n pointing out of the meshfree region. Zero away from it.
+     */
+    const Tensor<1, dim> &
+    interface_area_vector(const unsigned int k) const;
 
     /** Sum of all particle volumes. */
     double
@@ -85,6 +101,8 @@ namespace pg
     std::vector<unsigned int>                                 vertices;
     std::vector<std::map<types::boundary_id, Tensor<1, dim>>> area_vectors;
     std::vector<bool>                                         interface;
+    std::vector<bool>                                         corner;
+    std::vector<Tensor<1, dim>>                               interface_areas;
   };
 } // namespace pg
 
