@@ -530,6 +530,45 @@ namespace pg
 
 
     void
+    Analysis::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Analysis");
+      {
+        prm.declare_entry(
+          "Type",
+          "static",
+          Patterns::Selection("static|eigenmodes"),
+          "static: quasi-static load stepping with Newton's method. "
+          "eigenmodes: the eigenvalues of the tangent in the undeformed "
+          "state (with the given constraints; none for a free body), by a "
+          "dense LAPACK solve (at most 6000 unknowns, one MPI rank). Zero "
+          "eigenvalues beyond the rigid-body motions, or many small ones, "
+          "reveal spurious modes (dissertation section 7.2.1).");
+        prm.declare_entry("Number of eigenvalues",
+                          "200",
+                          Patterns::Integer(1),
+                          "How many of the smallest eigenvalues go to "
+                          "summary.json and eigenvalues.txt.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Analysis::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Analysis");
+      {
+        type          = prm.get("Type");
+        n_eigenvalues = prm.get_integer("Number of eigenvalues");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
     Output::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
@@ -653,6 +692,7 @@ namespace pg
       Loading::declare_parameters(prm);
       Newton::declare_parameters(prm);
       LinearSolver::declare_parameters(prm);
+      Analysis::declare_parameters(prm);
       Output::declare_parameters(prm);
     }
 
@@ -721,6 +761,7 @@ namespace pg
       loading.parse_parameters(prm);
       newton.parse_parameters(prm);
       linear_solver.parse_parameters(prm);
+      analysis.parse_parameters(prm);
       output.parse_parameters(prm, dim);
 
       AssertThrow(geometry.lower_corner.size() == dim &&

@@ -245,6 +245,10 @@ namespace pg
         first = false;
       }
     out << "},\n";
+    if (!s.eigenvalues.empty())
+      out << "  \"max_eigenvalue\": " << json_number(s.max_eigenvalue)
+          << ",\n  \"n_zero_eigenvalues\": " << s.n_zero_eigenvalues
+          << ",\n  \"eigenvalues\": " << json_list(s.eigenvalues) << ",\n";
     if (s.have_errors)
       out << "  \"errors\": {\"L2\": " << json_number(s.L2)
           << ", \"H1\": " << json_number(s.H1)

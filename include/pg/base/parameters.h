@@ -154,6 +154,20 @@ namespace pg
       parse_parameters(ParameterHandler &prm);
     };
 
+    /** Subsection "Analysis". */
+    struct Analysis
+    {
+      /** static | eigenmodes */
+      std::string type;
+      /** How many of the smallest eigenvalues are reported. */
+      unsigned int n_eigenvalues;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
     /** Subsection "Output". */
     struct Output
     {
@@ -187,6 +201,7 @@ namespace pg
       Loading            loading;
       Newton             newton;
       LinearSolver       linear_solver;
+      Analysis           analysis;
       Output             output;
 
       /** Dirichlet values u(X, t) (dim components). */
