@@ -30,6 +30,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <algorithm>
@@ -763,10 +764,51 @@ namespace pg
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::insert);
 
-    Parameters::LinearSolver direct;
-    direct.type      = "direct";
-    direct.tolerance = 0;
-    solve_linear_system(direct, dof_handler, matrix, update, rhs);
+    // The system can be singular but consistent: with FE coupling plus a
+    // free surface, affine fields tangential on the surface give rows that
+    // do not depend on alpha (doc/element-view.md section 5). A direct
+    // solve would then return an ordering-dependent member of the solution
+    // set. Iterative refinement with a slightly shifted factorization,
+    //   alpha <- alpha + (A + eps D)^{-1} (b - A alpha),  alpha_0 = 0,
+    // converges in a few steps on the regular part (eps << |lambda|) and
+    // keeps the null-space part at zero: the same factors on any number of
+    // MPI ranks. D is the largest entry of each row.
+    {
+      LinearAlgebra::SparseMatrix shifted;
+      shifted.copy_from(matrix);
+      for (const auto row : owned_dofs)
+        {
+          double largest = 0;
+          for (auto entry = matrix.begin(row); entry != matrix.end(row);
+               ++entry)
+            largest = std::max(largest, std::abs(entry->value()));
+          shifted.add(row, row, 1e-9 * largest);
+        }
+      shifted.compress(VectorOperation::add);
+      SolverControl                  control(1, 0, false, false);
+      TrilinosWrappers::SolverDirect solver(
+        control,
+        TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
+      solver.initialize(shifted);
+      LinearAlgebra::Vector residual(owned_dofs, comm),
+        correction(owned_dofs, comm);
+      update                   = 0;
+      const double rhs_norm    = rhs.l2_norm();
+      unsigned int refinements = 0;
+      for (; refinements < 50; ++refinements)
+        {
+          matrix.vmult(residual, update);
+          residual.sadd(-1., 1., rhs);
+          if (residual.l2_norm() <= 1e-14 * rhs_norm)
+            break;
+          solver.solve(correction, residual);
+          update += correction;
+        }
+      AssertThrow(refinements < 50,
+                  ExcMessage("The VC system could not be solved: change "
+                             "the VC boundary option of 'Formulation' in "
+                             "subsection 'Discretization' (p, s or sn)."));
+    }
     LinearAlgebra::Vector ghosted(owned_dofs, relevant_dofs, comm);
     ghosted = update;
     std::vector<Tensor<1, dim>> alpha(n);

@@ -123,7 +123,9 @@ main(int argc, char **argv)
                                  "VCBCPBG V5sn Unl",
                                  "VCPBG V3sn U1"})
     exact(2, code, "all");
-  exact(2, "VCBCPPG V3sn Unl", "box 0, -1.1 : 1.1, 1.1");
+  for (const std::string code :
+       {"VCBCPPG V3sn Unl", "VCBCPBG V5sn Unl", "VCPBG V3sn U1"})
+    exact(2, code, "box 0, -1.1 : 1.1, 1.1");
   exact(3, "VCBCPPG V3sn Unl", "all");
   exact(3, "VCBCPBG V5sn Unl", "all");
 
