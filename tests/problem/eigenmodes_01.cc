@@ -19,16 +19,14 @@
 #include "../tests.h"
 #include "problem_fixture.h"
 
-#include <fstream>
 
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  std::ifstream     file(SOURCE_DIR "/../../prm/eigenmodes_block.prm");
-  std::stringstream base;
-  base << file.rdbuf();
+  const std::string base =
+    read_file(SOURCE_DIR "/../../prm/eigenmodes_block.prm");
   std::ostringstream screen;
 
   double q1_bending = 0;
@@ -40,7 +38,7 @@ main(int argc, char **argv)
                                  "VCPPG V3sn Unl"})
     {
       const pg::RunSummary s =
-        run_problem<2>(base.str() +
+        run_problem<2>(base +
                          "subsection Discretization\n  set Formulation = " +
                          code + "\nend\n",
                        screen);

@@ -17,15 +17,10 @@
 #include "../tests.h"
 #include "problem_fixture.h"
 
-#include <fstream>
-
 std::string
 patch_test(const std::string &formulation, const std::string &region)
 {
-  std::ifstream     file(SOURCE_DIR "/../../prm/linear_patch_test.prm");
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str() +
+  return read_file(SOURCE_DIR "/../../prm/linear_patch_test.prm") +
          "subsection Discretization\n  set Formulation = " + formulation +
          "\nend\nsubsection Geometry\n  set Meshfree region = " + region +
          "\nend\nsubsection Output\n  set VTU = false\nend\n";

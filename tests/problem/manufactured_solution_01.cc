@@ -19,7 +19,6 @@
 #include "problem_fixture.h"
 
 #include <cmath>
-#include <fstream>
 
 /** Least-squares slope of log(error) against log(h). */
 double
@@ -42,9 +41,8 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
-  std::ifstream     file(SOURCE_DIR "/../../prm/manufactured_solution.prm");
-  std::stringstream base;
-  base << file.rdbuf();
+  const std::string base =
+    read_file(SOURCE_DIR "/../../prm/manufactured_solution.prm");
   std::ostringstream screen;
 
   for (const auto &[code, l2_bound, h1_bound] :
@@ -59,8 +57,8 @@ main(int argc, char **argv)
       for (const unsigned int n : {8u, 16u, 32u, 64u})
         {
           const pg::RunSummary s = run_problem<2>(
-            base.str() + "subsection Discretization\n  set Formulation = " +
-              code + "\nend\nsubsection Geometry\n  set Subdivisions = " +
+            base + "subsection Discretization\n  set Formulation = " + code +
+              "\nend\nsubsection Geometry\n  set Subdivisions = " +
               std::to_string(n) + "\n  set Random seed = " + std::to_string(n) +
               "\nend\nsubsection Output\n  set VTU = false\nend\n",
             screen);

@@ -9,8 +9,19 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <fstream>
 #include <sstream>
 #include <string>
+
+/** The text of the file @p name (a parameter file of prm/). */
+inline std::string
+read_file(const std::string &name)
+{
+  std::ifstream     file(name);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
 
 template <int dim>
 pg::RunSummary
