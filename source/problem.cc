@@ -1590,6 +1590,50 @@ namespace pg
         postprocess(step, t, step_iterations);
       }
 
+    // The oscillation indicator and a plain table of the particle fields
+    // (for plots) at the final state; every rank knows all particles.
+    if (particles.n_particles() > 0)
+      {
+        std::vector<Tensor<2, dim>> F(particles.n_particles());
+        for (unsigned int k = 0; k < F.size(); ++k)
+          F[k] = particle_deformation_gradient(k);
+        double oscillation = 0, deformation = 0;
+        for (unsigned int k = 0; k < F.size(); ++k)
+          {
+            Tensor<2, dim> mean;
+            double         volume = 0;
+            for (const unsigned int j : families.members(k))
+              {
+                mean += particles.volume(j) * F[j];
+                volume += particles.volume(j);
+              }
+            mean /= volume;
+            oscillation += particles.volume(k) * (F[k] - mean).norm_square();
+            deformation += particles.volume(k) *
+                           (F[k] - Tensor<2, dim>(unit_symmetric_tensor<dim>()))
+                             .norm_square();
+          }
+        summary.gradient_oscillation =
+          deformation > 0 ? std::sqrt(oscillation / deformation) : 0.;
+        if (root)
+          {
+            std::ofstream table(prm.output.directory + "/particles.txt");
+            table << "# x y" << (dim == 3 ? " z" : "") << " u_x u_y"
+                  << (dim == 3 ? " u_z" : "") << " F_ij (row-major) volume\n"
+                  << std::setprecision(10);
+            for (unsigned int k = 0; k < F.size(); ++k)
+              {
+                table << particles.position(k);
+                for (unsigned int c = 0; c < dim; ++c)
+                  table << " " << u_full[particles.dof(k, c)];
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = 0; j < dim; ++j)
+                    table << " " << F[k][i][j];
+                table << " " << particles.volume(k) << "\n";
+              }
+          }
+      }
+
     // Final report: normalised where a natural reference exists.
     for (const auto &[name, value] : summary.points)
       {
@@ -1604,6 +1648,13 @@ namespace pg
         for (const double v : r)
           pcout << " " << (std::abs(v) < 1e-9 ? 0. : v);
         pcout << std::endl;
+      }
+    if (particles.n_particles() > 0)
+      {
+        std::ostringstream oscillation;
+        oscillation << std::setprecision(3) << summary.gradient_oscillation;
+        pcout << "  gradient oscillation of the particles: "
+              << oscillation.str() << std::endl;
       }
     if (summary.have_errors)
       pcout << "  errors: L2 relative = " << summary.L2_relative

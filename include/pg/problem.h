@@ -48,6 +48,13 @@ namespace pg
     /** Eigenmode analysis: eigenvalues below 1e-10 times the largest. */
     unsigned int n_zero_eigenvalues = 0;
     double       max_eigenvalue     = 0;
+    /**
+     * Oscillation of the particle deformation gradients at the final step:
+     * sqrt(sum_k V^k |F^k - mean_{H^k} F|^2 / sum_k V^k |F^k - 1|^2), with
+     * the volume-weighted mean over the family. Near 0 for smooth fields;
+     * spurious (zero-energy) modes and defective shape functions raise it.
+     */
+    double gradient_oscillation = 0;
     /** Largest VC correction factor |alpha^k| times the spacing. */
     double max_correction_factor = 0;
   };

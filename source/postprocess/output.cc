@@ -230,6 +230,8 @@ namespace pg
         << "  \"newton_iterations\": " << s.newton_iterations << ",\n"
         << "  \"newton_residuals_last_step\": "
         << json_list(s.newton_residuals_last_step) << ",\n"
+        << "  \"gradient_oscillation\": " << json_number(s.gradient_oscillation)
+        << ",\n"
         << "  \"max_interior_unit_stress_residual\": "
         << json_number(s.max_interior_unit_stress_residual) << ",\n";
     out << "  \"points\": {";
