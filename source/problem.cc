@@ -169,8 +169,19 @@ namespace pg
     LinearAlgebra::Vector       update, rhs, force;
     Vector<double>              u_full;
 
-    /** Tractions on meshfree faces load particles with T (n . d^k). */
+    /** Tractions on meshfree faces load particles through d^k. */
     bool traction_from_test_functions = false;
+    /**
+     * The area of each boundary part b at particle k seen by the test
+     * functions: d^k = sum_b c_b n_b on the unit normals n_b of the parts
+     * at k (section 8.2). With one part c = n . d^k; at a corner the
+     * decomposition keeps the other part's area out of the load.
+     */
+    std::vector<std::map<types::boundary_id, double>> boundary_area_weights;
+
+    /** Compute boundary_area_weights from the current d^k. */
+    void
+    compute_boundary_area_weights();
 
     std::mutex  failure_mutex;
     std::string failure;
@@ -406,7 +417,7 @@ namespace pg
           for (const auto &[id, area] : particles.boundary_area_vectors(k))
             if (is_neumann(id))
               {
-                seen += unit_stress[k] * (area / area.norm());
+                seen += boundary_area_weights[k].at(id);
                 geometric += area.norm();
               }
         if (geometric > 0)
@@ -563,6 +574,51 @@ namespace pg
 
   template <int dim>
   void
+  Problem<dim>::Implementation::compute_boundary_area_weights()
+  {
+    boundary_area_weights.assign(particles.n_particles(), {});
+    for (unsigned int k = 0; k < particles.n_particles(); ++k)
+      {
+        const auto &areas = particles.boundary_area_vectors(k);
+        if (areas.empty())
+          continue;
+        // least squares d^k = sum_b c_b n_b (the normals are independent at
+        // corners; parts with parallel normals share by projection)
+        const unsigned int          m = areas.size();
+        std::vector<Tensor<1, dim>> n;
+        for (const auto &area : areas)
+          n.push_back(area.second / area.second.norm());
+        FullMatrix<double> G(m, m);
+        Vector<double>     rhs(m), c(m);
+        for (unsigned int a = 0; a < m; ++a)
+          {
+            rhs(a) = n[a] * unit_stress[k];
+            for (unsigned int b = 0; b < m; ++b)
+              G(a, b) = n[a] * n[b];
+          }
+        bool independent = (m <= dim);
+        if (independent)
+          {
+            FullMatrix<double> copy(G);
+            independent = std::abs(copy.determinant()) > 1e-6;
+          }
+        if (independent)
+          {
+            G.gauss_jordan();
+            G.vmult(c, rhs);
+          }
+        else
+          c = rhs;
+        unsigned int a = 0;
+        for (const auto &area : areas)
+          boundary_area_weights[k][area.first] = c(a++);
+      }
+  }
+
+
+
+  template <int dim>
+  void
   Problem<dim>::Implementation::compute_unit_stress_residual()
   {
     std::vector<double>         d(particles.n_particles() * dim, 0.);
@@ -590,6 +646,7 @@ namespace pg
                      unit_stress[k].norm() /
                        std::pow(particles.spacing(k), dim - 1));
       }
+    compute_boundary_area_weights();
   }
 
 
@@ -1116,7 +1173,7 @@ namespace pg
                 // the consistent load there is the geometric one.
                 const double a = particles.on_interface(k) ?
                                    area.norm() :
-                                   unit_stress[k] * (area / area.norm());
+                                   boundary_area_weights[k].at(id);
                 for (unsigned int c = 0; c < dim; ++c)
                   local(c) += a * f(c);
               }
