@@ -169,8 +169,12 @@ namespace pg
     LinearAlgebra::Vector       update, rhs, force;
     Vector<double>              u_full;
 
-    /** Tractions on meshfree faces load particles through d^k. */
-    bool traction_from_test_functions = false;
+    /**
+     * Tractions on meshfree faces load particles through d^k ('Particle
+     * traction area' = test functions, or automatic with VC); otherwise by
+     * FE-consistent face quadrature.
+     */
+    const bool traction_from_test_functions;
     /**
      * The area of each boundary part b at particle k seen by the test
      * functions: d^k = sum_b c_b n_b on the unit normals n_b of the parts
@@ -214,6 +218,11 @@ namespace pg
                     parallel::shared::Triangulation<dim>::partition_metis)
     , fe(FE_Q<dim>(1), dim)
     , fe_scalar(1)
+    , traction_from_test_functions(
+        parameters.boundary_conditions.particle_traction_area ==
+          "test functions" ||
+        (parameters.boundary_conditions.particle_traction_area == "automatic" &&
+         formulation.variational_consistency))
   {
     AssertThrow(!(parameters.linear_solver.type == "cg" &&
                   (formulation.method == FormulationCode::Method::ppg1 ||
@@ -250,12 +259,7 @@ namespace pg
         {
           if (!meshfree[cell->active_cell_index()])
             owned_fe_cells.push_back(cell);
-          else if (!(prm.boundary_conditions.particle_traction_area ==
-                       "test functions" ||
-                     (prm.boundary_conditions.particle_traction_area ==
-                        "automatic" &&
-                      formulation.variational_consistency)) &&
-                   has_neumann_face(cell))
+          else if (!traction_from_test_functions && has_neumann_face(cell))
             owned_meshfree_neumann_cells.push_back(cell);
         }
 
@@ -295,10 +299,6 @@ namespace pg
     timer.restart();
 
     compute_unit_stress_residual();
-    traction_from_test_functions =
-      prm.boundary_conditions.particle_traction_area == "test functions" ||
-      (prm.boundary_conditions.particle_traction_area == "automatic" &&
-       formulation.variational_consistency);
 
     // Locate the reference points once (every rank knows all cells).
     const MappingQ1<dim> mapping;
@@ -1150,12 +1150,10 @@ namespace pg
       Scratch<dim>(fe_scalar),
       Copy());
 
-    // Particle loads: the body force V^k rho_0 b and, with 'Particle
-    // traction area = test functions', the traction times the normal part
-    // of the unit-stress residual d^k, the area vector of the test
-    // functions actually used (section 8.2, eqs. 4.32-4.35).
-    const bool     test_function_area = traction_from_test_functions;
-    Vector<double> f(dim), local(dim);
+    // Particle loads: the body force V^k rho_0 b and, with tractions through
+    // the test functions, T_b c_b with c_b the area of boundary part b in
+    // the unit-stress residual d^k (section 8.2, eqs. 4.32-4.35).
+    Vector<double>                       f(dim), local(dim);
     std::vector<types::global_dof_index> dofs(dim);
     for (const unsigned int k : owned_families)
       {
@@ -1163,7 +1161,7 @@ namespace pg
         body_force.vector_value(particles.position(k), f);
         for (unsigned int c = 0; c < dim; ++c)
           local(c) += particles.volume(k) * f(c);
-        if (test_function_area)
+        if (traction_from_test_functions)
           for (const auto &[id, area] : particles.boundary_area_vectors(k))
             if (is_neumann(id))
               {
