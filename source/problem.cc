@@ -5,6 +5,7 @@
 #include <pg/elements/family_elements.h>
 #include <pg/elements/q1_cell.h>
 #include <pg/elements/quadrature_table.h>
+#include <pg/elements/second_order_correction.h>
 #include <pg/families/family_set.h>
 #include <pg/materials/material.h>
 #include <pg/mesh/mesh_generator.h>
@@ -89,6 +90,13 @@ namespace pg
      */
     void
     correct_variational_consistency();
+
+    /**
+     * VC2 (section 11.6): the first- and second-order correction of PPG2
+     * with option s, then rebuild the family tables.
+     */
+    void
+    correct_second_order_consistency();
 
     /** Set the time of every parsed function to the load factor @p t. */
     void
@@ -175,6 +183,19 @@ namespace pg
      * FE-consistent face quadrature.
      */
     const bool traction_from_test_functions;
+    /** 'Particle traction area = exact stress'. */
+    const bool traction_from_exact_stress;
+
+    /** grad u of the exact solution (Gradient expression if given). */
+    Tensor<2, dim>
+    exact_displacement_gradient(const Point<dim> &p) const;
+
+    /**
+     * The internal force at particle @p k of the exact stress,
+     * sum over the families e containing k of sum_q w_q P(X_q) T^{qk}.
+     */
+    Tensor<1, dim>
+    exact_stress_force(const unsigned int k) const;
     /**
      * The area of each boundary part b at particle k seen by the test
      * functions: d^k = sum_b c_b n_b on the unit normals n_b of the parts
@@ -223,6 +244,8 @@ namespace pg
           "test functions" ||
         (parameters.boundary_conditions.particle_traction_area == "automatic" &&
          formulation.variational_consistency))
+    , traction_from_exact_stress(
+        parameters.boundary_conditions.particle_traction_area == "exact stress")
   {
     AssertThrow(!(parameters.linear_solver.type == "cg" &&
                   (formulation.method == FormulationCode::Method::ppg1 ||
@@ -259,7 +282,8 @@ namespace pg
         {
           if (!meshfree[cell->active_cell_index()])
             owned_fe_cells.push_back(cell);
-          else if (!traction_from_test_functions && has_neumann_face(cell))
+          else if (!traction_from_test_functions &&
+                   !traction_from_exact_stress && has_neumann_face(cell))
             owned_meshfree_neumann_cells.push_back(cell);
         }
 
@@ -388,8 +412,12 @@ namespace pg
     if (formulation.method != FormulationCode::Method::fem)
       pcout << " (" << formulation.method_name() << ", "
             << (formulation.points == FormulationCode::Points::unl ? "Unl" :
-                                                                     "U1")
-            << ", " << prm.discretization.shape_functions
+                formulation.points == FormulationCode::Points::u1  ? "U1" :
+                                                                     "U2")
+            << ", "
+            << (formulation.points == FormulationCode::Points::u2 ?
+                  std::string("WTE2") :
+                  prm.discretization.shape_functions)
             << ", bond correction "
             << (formulation.bond_correction ? "on" : "off") << ")";
     pcout << "\n  material:        " << prm.material.model
@@ -426,7 +454,8 @@ namespace pg
             percent << std::fixed << std::setprecision(1)
                     << 100. * seen / geometric;
             pcout << "  particle traction area: "
-                  << (traction_from_test_functions ? "test functions" :
+                  << (traction_from_exact_stress   ? "exact stress" :
+                      traction_from_test_functions ? "test functions" :
                                                      "geometry")
                   << " (the test functions see " << percent.str()
                   << " % of the Neumann area)\n";
@@ -441,6 +470,14 @@ namespace pg
            << summary.max_correction_factor;
         pcout << "  VC correction:   interior |d^k|/h^(dim-1) <= " << vc.str()
               << "\n";
+        if (formulation.second_order_consistency)
+          {
+            std::ostringstream vc2;
+            vc2 << std::scientific << std::setprecision(1)
+                << summary.max_interior_second_order_residual;
+            pcout << "  VC2 correction:  interior |D^k|/h^dim <= " << vc2.str()
+                  << "\n";
+          }
       }
     pcout << "  DoFs:            " << dof_handler.n_dofs() << "\n"
           << "  matrix nonzeros: " << summary.matrix_nonzeros << std::endl;
@@ -653,8 +690,51 @@ namespace pg
 
   template <int dim>
   void
+  Problem<dim>::Implementation::correct_second_order_consistency()
+  {
+    const unsigned int n = particles.n_particles();
+    std::vector<bool>  fixed(n, false);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        AssertThrow(!particles.on_interface(k),
+                    ExcBadParameter("Discretization/Formulation",
+                                    formulation.text,
+                                    "VC2 needs a body that is meshfree "
+                                    "everywhere: set 'Meshfree region = all' "
+                                    "in subsection 'Geometry', or use a "
+                                    "first-order VC code."));
+        fixed[k] = !particles.boundary_area_vectors(k).empty();
+      }
+    const SecondOrderCorrection<dim> correction =
+      solve_second_order_correction(particles,
+                                    families,
+                                    *family_elements,
+                                    fixed);
+    summary.max_correction_factor = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      summary.max_correction_factor =
+        std::max(summary.max_correction_factor,
+                 correction.alpha[k].norm() * particles.spacing(k));
+    summary.max_interior_second_order_residual =
+      correction.max_second_order_residual_after;
+    family_elements->set_correction_factors(correction.alpha,
+                                            correction.second_order_alpha);
+    for (unsigned int f = 0; f < owned_families.size(); ++f)
+      family_elements->build(owned_families[f], family_tables[f]);
+    compute_unit_stress_residual();
+  }
+
+
+
+  template <int dim>
+  void
   Problem<dim>::Implementation::correct_variational_consistency()
   {
+    if (formulation.second_order_consistency)
+      {
+        correct_second_order_consistency();
+        return;
+      }
     using VCBoundary     = FormulationCode::VCBoundary;
     const unsigned int n = particles.n_particles();
     // How the rows of every particle read (section 11.5):
@@ -1158,9 +1238,25 @@ namespace pg
     for (const unsigned int k : owned_families)
       {
         local = 0;
-        body_force.vector_value(particles.position(k), f);
-        for (unsigned int c = 0; c < dim; ++c)
-          local(c) += particles.volume(k) * f(c);
+        if (traction_from_exact_stress && !particles.on_interface(k) &&
+            std::any_of(particles.boundary_area_vectors(k).begin(),
+                        particles.boundary_area_vectors(k).end(),
+                        [&](const auto &area) {
+                          return is_neumann(area.first);
+                        }))
+          {
+            // the surface load plus the body force: the whole internal
+            // force of the exact stress
+            const Tensor<1, dim> force = exact_stress_force(k);
+            for (unsigned int c = 0; c < dim; ++c)
+              local(c) = force[c];
+          }
+        else
+          {
+            body_force.vector_value(particles.position(k), f);
+            for (unsigned int c = 0; c < dim; ++c)
+              local(c) += particles.volume(k) * f(c);
+          }
         if (traction_from_test_functions)
           for (const auto &[id, area] : particles.boundary_area_vectors(k))
             if (is_neumann(id))
@@ -1302,6 +1398,52 @@ namespace pg
 
 
   template <int dim>
+  Tensor<2, dim>
+  Problem<dim>::Implementation::exact_displacement_gradient(
+    const Point<dim> &p) const
+  {
+    Tensor<2, dim> G;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        G[i][j] = prm.exact_gradient ?
+                    prm.exact_gradient->value(p, i * dim + j) :
+                    prm.exact_solution.gradient(p, i)[j];
+    return G;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Problem<dim>::Implementation::exact_stress_force(const unsigned int k) const
+  {
+    // Families are pairwise: the families containing k are those of the
+    // members of family k.
+    Tensor<1, dim>       force;
+    QuadratureTable<dim> table;
+    for (const unsigned int e : families.members(k))
+      {
+        family_elements->build(e, table);
+        const auto members = families.members(e);
+        const auto found   = std::find(members.begin(), members.end(), k);
+        Assert(found != members.end(), ExcInternalError());
+        std::vector<Tensor<1, dim>> local(members.size());
+        add_stress_residual<dim>(
+          table,
+          [&](const unsigned int q) {
+            return material->first_piola_stress(
+              unit_symmetric_tensor<dim>() +
+              exact_displacement_gradient(table.points[q]));
+          },
+          local);
+        force += local[found - members.begin()];
+      }
+    return force;
+  }
+
+
+
+  template <int dim>
   void
   Problem<dim>::Implementation::compute_errors()
   {
@@ -1309,13 +1451,7 @@ namespace pg
     // with the trial gradient at the master.
     const auto &exact          = prm.exact_solution;
     const auto  exact_gradient = [&](const Point<dim> &p) {
-      Tensor<2, dim> G;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          G[i][j] = prm.exact_gradient ?
-                       prm.exact_gradient->value(p, i * dim + j) :
-                       exact.gradient(p, i)[j];
-      return G;
+      return exact_displacement_gradient(p);
     };
     double                           e0 = 0, e1 = 0, n0 = 0, n1 = 0;
     const QGauss<dim>                quadrature(3);

@@ -43,6 +43,11 @@ namespace pg
     std::map<std::string, double> timing;
     /** Largest |d^k| at interior particles, divided by spacing^(dim-1). */
     double max_interior_unit_stress_residual = 0;
+    /**
+     * VC2: largest second-order residual D^k at interior particles,
+     * divided by spacing^dim (SecondOrderCorrection).
+     */
+    double max_interior_second_order_residual = 0;
     /** Eigenmode analysis: the smallest eigenvalues (real parts). */
     std::vector<double> eigenvalues;
     /** Eigenmode analysis: eigenvalues below 1e-10 times the largest. */

@@ -8,12 +8,13 @@ namespace pg
   namespace
   {
     const std::string valid_parts =
-      "Valid codes read '[VC][BC]<method> [V<n><b>] <points> [TL]' with "
-      "<method> = PBG, PPG (= PPG1), PPG1 or PPG2, the VC correction "
-      "function V1, V3 or V5 (default V3 for PPG, V5 for PBG) and its "
-      "boundary option <b> = p, s or sn (default sn), and <points> = Unl or "
-      "U1 (U1 with PBG only), e.g. 'BCPBG Unl TL', 'VCPPG V3sn Unl', "
-      "'VCBCPBG V5sn Unl TL', 'PBG U1'; or 'FEM'.";
+      "Valid codes read '[VC|VC2][BC]<method> [V<n><b>] <points> [TL]' "
+      "with <method> = PBG, PPG (= PPG1), PPG1 or PPG2, the VC correction "
+      "function V1, V3 or V5 (default V3 for PPG, V5 for PBG, V1 for VC2) "
+      "and its boundary option <b> = p, s or sn (default sn; VC2 takes s), "
+      "and <points> = Unl, U1 (PBG only) or U2, e.g. 'BCPBG Unl TL', "
+      "'VCPPG V3sn Unl', 'VCBCPBG V5sn Unl TL', 'PBG U1', 'VC2PPG V1s U2'; "
+      "or 'FEM'.";
 
 
 
@@ -72,26 +73,24 @@ namespace pg
     result.text.clear();
     for (const std::string &w : words)
       result.text += (result.text.empty() ? "" : " ") + w;
-    result.bond_correction         = false;
-    result.points                  = FormulationCode::Points::unl;
-    result.variational_consistency = false;
-    result.vc_boundary             = FormulationCode::VCBoundary::sn;
-    bool have_correction_function  = false;
+    result.bond_correction          = false;
+    result.points                   = FormulationCode::Points::unl;
+    result.variational_consistency  = false;
+    result.second_order_consistency = false;
+    result.vc_boundary              = FormulationCode::VCBoundary::sn;
+    bool have_correction_function   = false;
 
     // The first word: corrections, then the method.
     std::string head = words[0];
     for (;;)
       {
-        if (starts_with(head, "VC2"))
-          reject(code,
-                 "the second-order variational-consistency correction (VC2) "
-                 "is not yet available.");
-        else if (starts_with(head, "VC"))
+        if (starts_with(head, "VC"))
           {
             if (result.variational_consistency)
               reject(code, "VC appears twice.");
-            result.variational_consistency = true;
-            head                           = head.substr(2);
+            result.variational_consistency  = true;
+            result.second_order_consistency = starts_with(head, "VC2");
+            head = head.substr(result.second_order_consistency ? 3 : 2);
           }
         else if (starts_with(head, "BC"))
           {
@@ -105,8 +104,11 @@ namespace pg
       }
     if (head == "PBG")
       result.method = FormulationCode::Method::pbg;
-    else if (head == "PPG" || head == "PPG1")
+    else if (head == "PPG1" ||
+             (head == "PPG" && !result.second_order_consistency))
       result.method = FormulationCode::Method::ppg1;
+    else if (head == "PPG" && result.second_order_consistency)
+      result.method = FormulationCode::Method::ppg2; // "based on PPG2" (7.1)
     else if (head == "PPG2")
       result.method = FormulationCode::Method::ppg2;
     else if (head == "FEM")
@@ -125,13 +127,14 @@ namespace pg
     for (unsigned int i = 1; i < words.size(); ++i)
       {
         const std::string &w = words[i];
-        if (w == "Unl" || w == "U1")
+        if (w == "Unl" || w == "U1" || w == "U2")
           {
             if (have_points)
               reject(code, "it names two formulations.");
             have_points   = true;
             result.points = (w == "Unl" ? FormulationCode::Points::unl :
-                                          FormulationCode::Points::u1);
+                             w == "U1"  ? FormulationCode::Points::u1 :
+                                          FormulationCode::Points::u2);
           }
         else if (w == "TL")
           {
@@ -169,9 +172,8 @@ namespace pg
                      "the VC boundary option <" + option +
                        "> is unknown; use p, s or sn.");
           }
-        else if (w == "U2" || w == "UnlP0" || w == "IUnlP0" || w == "U2P1" ||
-                 w == "U2P1C" || w == "Unl+P1C" || w == "U1SUnl" ||
-                 w == "U1SIG")
+        else if (w == "UnlP0" || w == "IUnlP0" || w == "U2P1" || w == "U2P1C" ||
+                 w == "Unl+P1C" || w == "U1SUnl" || w == "U1SIG")
           reject(code, "the formulation <" + w + "> is not yet available.");
         else
           reject(code, "the part <" + w + "> is unknown.");
@@ -183,9 +185,29 @@ namespace pg
              "'VCPPG V3sn Unl'.");
     if (result.variational_consistency && !have_correction_function)
       result.correction_function =
-        (result.method == FormulationCode::Method::pbg ?
+        (result.second_order_consistency ?
+           FormulationCode::CorrectionFunction::v1 :
+         result.method == FormulationCode::Method::pbg ?
            FormulationCode::CorrectionFunction::v5 :
            FormulationCode::CorrectionFunction::v3);
+    if (result.second_order_consistency)
+      {
+        if (result.method != FormulationCode::Method::ppg2)
+          reject(code,
+                 "the second-order correction VC2 is built on PPG2 (Table "
+                 "7.1, section 11.6); write 'VC2PPG' or 'VC2PPG2'.");
+        if (!have_correction_function)
+          result.vc_boundary = FormulationCode::VCBoundary::s;
+        if (result.vc_boundary != FormulationCode::VCBoundary::s)
+          reject(code,
+                 "VC2 is available with the boundary option s only, e.g. "
+                 "'VC2PPG V1s U2'.");
+        if (result.correction_function ==
+            FormulationCode::CorrectionFunction::v5)
+          reject(code,
+                 "V5 (the bond projector) belongs to PBG; use V1 or V3 "
+                 "with VC2.");
+      }
     if (result.points == FormulationCode::Points::u1 &&
         result.method != FormulationCode::Method::pbg)
       reject(code,

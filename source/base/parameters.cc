@@ -187,14 +187,19 @@ namespace pg
           "The method, as the dissertation's code (Table 7.1), or FEM: "
           "[VC][BC]<method> [V<n><b>] <points> [TL]. <method>: PBG (eq. "
           "4.30), PPG (= PPG1, eq. 4.21) or PPG2 (eq. 4.22). <points>: Unl "
-          "(shape functions at every family member) or U1 (PBG at the master "
-          "only: classical correspondence). BC switches the bond correction "
-          "(eq. 5.55) on; recommended for every first-order formulation under "
-          "finite strain. VC switches the variational-consistency correction "
-          "on (section 5.3.2) with the correction function V1, V3 or V5 "
-          "(default V3 for PPG, V5 for PBG) and the boundary option p, s or "
-          "sn (default sn). FEM uses Q1 elements everywhere. Examples: "
-          "'BCPBG Unl TL', 'VCBCPBG V5sn Unl', 'VCBCPPG V3sn Unl', 'PBG U1'.");
+          "(shape functions at every family member), U1 (PBG at the master "
+          "only: classical correspondence) or U2 (the quadratic WTE2 at every "
+          "family member, whatever 'Shape functions' says). BC switches the "
+          "bond correction (eq. 5.55) on; recommended for every first-order "
+          "formulation under finite strain. VC switches the "
+          "variational-consistency correction on (section 5.3.2) with the "
+          "correction function V1, V3 or V5 (default V3 for PPG, V5 for PBG) "
+          "and the boundary option p, s or sn (default sn). VC2 adds the "
+          "second-order correction (section 11.6); it is built on PPG2, "
+          "so 'VC2PPG' means PPG2, and it takes the boundary option s "
+          "(default correction function V1). FEM uses Q1 elements everywhere. "
+          "Examples: 'BCPBG Unl TL', 'VCBCPBG V5sn Unl', 'VCBCPPG V3sn Unl', "
+          "'PBG U1', 'VC2PPG V1s U2'.");
         prm.declare_entry("Shape functions",
                           "MTE1",
                           Patterns::Selection("MTE1|MLS1|WLS1|WTE1"),
@@ -357,7 +362,7 @@ namespace pg
         prm.declare_entry(
           "Particle traction area",
           "automatic",
-          Patterns::Selection("automatic|geometry|test functions"),
+          Patterns::Selection("automatic|geometry|test functions|exact stress"),
           "How a traction loads the particles on meshfree boundary faces. "
           "'geometry': the FE-consistent load, the integral of T N_k over "
           "the boundary faces (the total load is exact). 'test functions': "
@@ -366,7 +371,15 @@ namespace pg
           "7.1); this is what makes VC-corrected methods pass the patch "
           "test, but without VC d^k misses part of the boundary area (the "
           "share is printed at start-up). 'automatic': 'test functions' "
-          "for VC-corrected formulations, 'geometry' otherwise.");
+          "for VC-corrected formulations, 'geometry' otherwise. 'exact "
+          "stress' (patch tests): a particle on a Neumann boundary gets the "
+          "test-function integral of the exact stress P(grad u) of "
+          "subsection 'Exact solution' (the 'Traction' function is not "
+          "used), sum_q w_q P(X_q) T^{qk} over its families; this is the "
+          "discrete integral of N_k P n over the surface plus the body "
+          "force, and equals P . d^k (eq. 4.32 with the full tensor) for a "
+          "constant stress. The quadratic patch test needs it for a linear "
+          "stress.");
       }
       prm.leave_subsection();
     }

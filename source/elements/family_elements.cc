@@ -16,7 +16,9 @@ namespace pg
     : particles(particles)
     , families(families)
     , formulation(formulation)
-    , base(base)
+    , base(formulation.points == FormulationCode::Points::u2 ?
+             ShapeFunctions::Base::wte2 :
+             base)
     , weight_exponent(weight_exponent)
   {}
 
@@ -128,21 +130,44 @@ namespace pg
   template <int dim>
   void
   FamilyElements<dim>::set_correction_factors(
-    const std::vector<Tensor<1, dim>> &factors)
+    const std::vector<Tensor<1, dim>> &factors,
+    const std::vector<Tensor<2, dim>> &second_order_factors)
   {
     Assert(formulation.variational_consistency, ExcInternalError());
     AssertDimension(factors.size(), families.n_families());
+    Assert(second_order_factors.empty() ||
+             (formulation.second_order_consistency &&
+              second_order_factors.size() == families.n_families()),
+           ExcInternalError());
     alpha = factors;
     // The master gradients: PPG corrects its test functions only, PBG the
-    // common trial and test functions (at the master Q = 1).
+    // common trial and test functions (at the master Q = 1). VC2 adds
+    // phi^{ka} alpha_2^k dX^{ka} (section 11.6: the bond to the node).
     for (unsigned int k = 0; k < families.n_families(); ++k)
-      for (unsigned int a = 0; a < master[k].size(); ++a)
-        {
-          const Tensor<1, dim> c = phi[k][a] * alpha[k];
-          master_test[k][a]      = master[k][a] + c;
-          if (formulation.method == FormulationCode::Method::pbg)
-            master[k][a] += c;
-        }
+      {
+        const auto geom = second_order_factors.empty() ?
+                            ShapeFunctions::FamilyGeometry<dim>() :
+                            geometry(k);
+        for (unsigned int a = 0; a < master[k].size(); ++a)
+          {
+            Tensor<1, dim> c = phi[k][a] * alpha[k];
+            if (!second_order_factors.empty())
+              c += phi[k][a] * (second_order_factors[k] * geom.bonds[a]);
+            master_test[k][a] = master[k][a] + c;
+            if (formulation.method == FormulationCode::Method::pbg)
+              master[k][a] += c;
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  const std::vector<double> &
+  FamilyElements<dim>::correction_function_values(const unsigned int k) const
+  {
+    AssertIndexRange(k, phi.size());
+    return phi[k];
   }
 
 
@@ -188,13 +213,16 @@ namespace pg
         for (const double v : geom.volumes)
           family_volume += v;
         if (formulation.points == FormulationCode::Points::u1)
-          table.add_point(geom.volumes[0], master[k]);
+          table.add_point(geom.volumes[0],
+                          master[k],
+                          particles.position(members[0]));
         else
           for (unsigned int j = 0; j < n; ++j)
             {
               trial_at(j);
               table.add_point(geom.volumes[0] * geom.volumes[j] / family_volume,
-                              g);
+                              g,
+                              particles.position(members[j]));
             }
         return;
       }
@@ -206,7 +234,7 @@ namespace pg
     for (unsigned int j = 1; j < n; ++j)
       {
         trial_at(j);
-        table.add_point(geom.volumes[j], g);
+        table.add_point(geom.volumes[j], g, particles.position(members[j]));
         if (formulation.method == Method::ppg1)
           {
             // g^{jjk}: family j's master gradient for node k

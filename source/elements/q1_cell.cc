@@ -9,11 +9,16 @@ namespace pg
     const unsigned int n = fe_values.dofs_per_cell;
     table.reinit(n, true);
     std::vector<Tensor<1, dim>> row(n);
+    const bool                  have_points =
+      (fe_values.get_update_flags() & update_quadrature_points);
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         for (unsigned int b = 0; b < n; ++b)
           row[b] = fe_values.shape_grad(b, q);
-        table.add_point(fe_values.JxW(q), row);
+        table.add_point(fe_values.JxW(q),
+                        row,
+                        have_points ? fe_values.quadrature_point(q) :
+                                      Point<dim>());
       }
   }
 

@@ -11,6 +11,7 @@ namespace pg
     n_nodes       = n;
     test_is_trial = test_trial;
     weights.clear();
+    points.clear();
     trial.clear();
     test_offsets.assign(1, 0);
     test_nodes.clear();
@@ -22,10 +23,12 @@ namespace pg
   template <int dim>
   void
   QuadratureTable<dim>::add_point(const double                       weight,
-                                  const std::vector<Tensor<1, dim>> &row)
+                                  const std::vector<Tensor<1, dim>> &row,
+                                  const Point<dim>                  &point)
   {
     AssertDimension(row.size(), n_nodes);
     weights.push_back(weight);
+    points.push_back(point);
     trial.insert(trial.end(), row.begin(), row.end());
     test_offsets.push_back(test_offsets.back());
   }
@@ -257,22 +260,38 @@ namespace pg
 
   template <int dim>
   void
-  add_unit_stress_residual(const QuadratureTable<dim>  &table,
-                           std::vector<Tensor<1, dim>> &d)
+  add_stress_residual(const QuadratureTable<dim>                    &table,
+                      const std::function<Tensor<2, dim>(unsigned)> &stress,
+                      std::vector<Tensor<1, dim>>                   &d)
   {
     AssertDimension(d.size(), table.n_nodes);
     for (unsigned int q = 0; q < table.n_points(); ++q)
       {
-        const double w = table.weights[q];
+        const Tensor<2, dim> wP = table.weights[q] * stress(q);
         if (table.test_is_trial)
           for (unsigned int a = 0; a < table.n_nodes; ++a)
-            d[a] += w * table.trial[q * table.n_nodes + a];
+            d[a] += wP * table.trial[q * table.n_nodes + a];
         else
           for (unsigned int t = table.test_offsets[q];
                t < table.test_offsets[q + 1];
                ++t)
-            d[table.test_nodes[t]] += w * table.test_vectors[t];
+            d[table.test_nodes[t]] += wP * table.test_vectors[t];
       }
+  }
+
+
+
+  template <int dim>
+  void
+  add_unit_stress_residual(const QuadratureTable<dim>  &table,
+                           std::vector<Tensor<1, dim>> &d)
+  {
+    add_stress_residual<dim>(
+      table,
+      [](unsigned int) -> Tensor<2, dim> {
+        return unit_symmetric_tensor<dim>();
+      },
+      d);
   }
 
 
@@ -299,6 +318,14 @@ namespace pg
   deformation_gradient<3>(const QuadratureTable<3> &,
                           const unsigned int,
                           const std::vector<Tensor<1, 3>> &);
+  template void
+  add_stress_residual<2>(const QuadratureTable<2> &,
+                         const std::function<Tensor<2, 2>(unsigned)> &,
+                         std::vector<Tensor<1, 2>> &);
+  template void
+  add_stress_residual<3>(const QuadratureTable<3> &,
+                         const std::function<Tensor<2, 3>(unsigned)> &,
+                         std::vector<Tensor<1, 3>> &);
   template void
   add_unit_stress_residual<2>(const QuadratureTable<2> &,
                               std::vector<Tensor<1, 2>> &);

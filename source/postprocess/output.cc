@@ -233,7 +233,9 @@ namespace pg
         << "  \"gradient_oscillation\": " << json_number(s.gradient_oscillation)
         << ",\n"
         << "  \"max_interior_unit_stress_residual\": "
-        << json_number(s.max_interior_unit_stress_residual) << ",\n";
+        << json_number(s.max_interior_unit_stress_residual) << ",\n"
+        << "  \"max_interior_second_order_residual\": "
+        << json_number(s.max_interior_second_order_residual) << ",\n";
     out << "  \"points\": {";
     for (unsigned int i = 0; i < s.points.size(); ++i)
       out << (i > 0 ? ", " : "") << "\"" << s.points[i].first

@@ -97,6 +97,79 @@ namespace pg
 
 
       /**
+       * WTE2 (pg-methods.md section 6.4): static weight about the master,
+       * difference basis p = (x_a, x_a x_b (a <= b)) with x = (X - X^k)/h;
+       * g^i = omega^{ki} V^i p^{ki} . M^{-1} . dp/dX(X^j) for i != 0 and
+       * g^0 = -sum, M = sum_i omega^{ki} V^i p^{ki} (x) p^{ki}. The
+       * gradients are linear in X^j - X^k, exact for quadratic fields.
+       */
+      template <int dim>
+      double
+      quadratic_taylor_gradients(const FamilyGeometry<dim>   &family,
+                                 const unsigned int           point,
+                                 std::vector<Tensor<1, dim>> &g)
+      {
+        constexpr int n_basis    = dim + dim * (dim + 1) / 2;
+        using Vec                = Eigen::Matrix<double, n_basis, 1>;
+        using Mat                = Eigen::Matrix<double, n_basis, n_basis>;
+        const unsigned int n     = family.bonds.size();
+        const double       h     = family_scale(family);
+        const auto         basis = [](const Tensor<1, dim> &x) {
+          Vec p;
+          int m = 0;
+          for (int a = 0; a < dim; ++a)
+            p(m++) = x[a];
+          for (int a = 0; a < dim; ++a)
+            for (int b = a; b < dim; ++b)
+              p(m++) = x[a] * x[b];
+          return p;
+        };
+
+        std::vector<Vec>    p(n);
+        std::vector<double> w(n);
+        Mat                 M = Mat::Zero();
+        for (unsigned int i = 1; i < n; ++i)
+          {
+            p[i] = basis(family.bonds[i] / h);
+            w[i] = weight(family.bonds[i].norm_square() / (h * h),
+                          family.weight_exponent) *
+                   family.volumes[i];
+            M += w[i] * p[i] * p[i].transpose();
+          }
+        const double cond = condition_number(M);
+        if (!std::isfinite(cond))
+          return cond;
+        const Mat Minv = M.inverse();
+
+        // dp/dX_c at the point: e_c for the linear monomials, the product
+        // rule for the quadratic ones (each divided by h)
+        const Tensor<1, dim>                x = family.bonds[point] / h;
+        Eigen::Matrix<double, n_basis, dim> dp =
+          Eigen::Matrix<double, n_basis, dim>::Zero();
+        int m = 0;
+        for (int a = 0; a < dim; ++a)
+          dp(m++, a) = 1. / h;
+        for (int a = 0; a < dim; ++a)
+          for (int b = a; b < dim; ++b, ++m)
+            {
+              dp(m, a) += x[b] / h;
+              dp(m, b) += x[a] / h;
+            }
+        const Eigen::Matrix<double, n_basis, dim> gamma = Minv * dp;
+
+        g.assign(n, Tensor<1, dim>());
+        for (unsigned int i = 1; i < n; ++i)
+          {
+            for (int c = 0; c < dim; ++c)
+              g[i][c] = w[i] * p[i].dot(gamma.col(c));
+            g[0] -= g[i];
+          }
+        return cond;
+      }
+
+
+
+      /**
        * Least-squares bases with the linear basis p = (1, (X - X^k)/h).
        * WLS1: static weight about the master, gradient dN_i/dX =
        * omega^{ki} V^i p^{ki} . M^{-1} . dp/dX (eq. 5.45).
@@ -204,6 +277,8 @@ namespace pg
             return least_squares_gradients(family, point, true, gradients);
           case Base::wls1:
             return least_squares_gradients(family, point, false, gradients);
+          case Base::wte2:
+            return quadratic_taylor_gradients(family, point, gradients);
         }
       Assert(false, ExcInternalError());
       return 0;

@@ -7,6 +7,9 @@
 // 2. With BC the deformation gradient at point j maps the bond k-j exactly
 //    for any (non-affine) positions, eq. (5.12); without BC it does not
 //    (except for WTE1/WLS1 at the master, which is no bond).
+// 3. U2 (WTE2, section 6.4): for a quadratic displacement field the
+//    deformation gradient at every evaluation point equals the exact one
+//    at that point to round-off (the trial space of a quadratic simplex).
 // Checked on a distorted particle set in 2-D and 3-D, on all families.
 
 #include <pg/base/formulation_code.h>
@@ -77,6 +80,49 @@ test()
         if (consistency >= 1e-12)
           deallog << "  max |F - F_exact| = " << consistency << std::endl;
       }
+
+  // u_i = H_ij X_j + C_ijk X_j X_k with C symmetric in j, k
+  Tensor<3, dim> C;
+  for (unsigned int i = 0; i < dim; ++i)
+    for (unsigned int j = 0; j < dim; ++j)
+      for (unsigned int k = j; k < dim; ++k)
+        C[i][j][k] = C[i][k][j] = 0.2 * random(rng);
+  const auto position = [&](const Point<dim> &X) {
+    Tensor<1, dim> x = X + H * X;
+    for (unsigned int i = 0; i < dim; ++i)
+      x[i] += X * (C[i] * X);
+    return x;
+  };
+  FamilyElements<dim> elements(fixture.particles,
+                               fixture.families,
+                               parse_formulation_code("PBG U2"),
+                               ShapeFunctions::Base::mte1,
+                               1.);
+  elements.initialize();
+  double consistency = 0;
+  for (unsigned int k = 0; k < fixture.families.n_families(); ++k)
+    {
+      QuadratureTable<dim> table;
+      elements.build(k, table);
+      const auto                  members = fixture.families.members(k);
+      std::vector<Tensor<1, dim>> y(members.size());
+      for (unsigned int b = 0; b < members.size(); ++b)
+        y[b] = position(fixture.particles.position(members[b])) -
+               position(fixture.particles.position(members[0]));
+      for (unsigned int q = 0; q < table.n_points(); ++q)
+        {
+          Tensor<2, dim> F = F_exact;
+          for (unsigned int i = 0; i < dim; ++i)
+            F[i] += 2. * (C[i] * table.points[q]);
+          consistency =
+            std::max(consistency,
+                     (deformation_gradient(table, q, y) - F).norm());
+        }
+    }
+  deallog << dim << "d U2 (WTE2): F exact for quadratic fields: "
+          << (consistency < 1e-11 ? "yes" : "NO") << std::endl;
+  if (consistency >= 1e-11)
+    deallog << "  max |F - F_exact| = " << consistency << std::endl;
 }
 
 

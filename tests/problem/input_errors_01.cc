@@ -58,11 +58,15 @@ main(int argc, char **argv)
         "subsection Discretization\n  set Formulation = XPBG Unl\nend\n");
   check("formulation not yet available",
         "subsection Discretization\n"
-        "  set Formulation = VC2PPG V1s U2\nend\n");
+        "  set Formulation = VCPPG V3sn UnlP0\nend\n");
   check("correction function without VC",
         "subsection Discretization\n  set Formulation = PPG V3sn Unl\nend\n");
   check("contradictory formulation",
         "subsection Discretization\n  set Formulation = PPG U1\nend\n");
+  check("VC2 on PBG",
+        "subsection Discretization\n  set Formulation = VC2PBG V1s U2\nend\n");
+  check("VC2 with option sn",
+        "subsection Discretization\n  set Formulation = VC2PPG V1sn U2\nend\n");
   check("incompressible material",
         "subsection Material\n  set Poisson's ratio = 0.5\nend\n");
   check("horizon too small",

@@ -10,8 +10,8 @@ namespace pg
   /**
    * A formulation code of the dissertation (Table 7.1), e.g.
    * "BCPBG Unl TL", parsed into its parts (architecture.md section 5).
-   * Parts that are not built yet (VC, VC2, V1..V5, U2, the mixed
-   * formulations, UL) are rejected with a "not yet available" message,
+   * Parts that are not built yet (V2, V4, the mixed formulations, UL) are
+   * rejected with a "not yet available" message,
    * never ignored.
    */
   struct FormulationCode
@@ -29,7 +29,8 @@ namespace pg
     enum class Points
     {
       unl, //!< every family member (PBG) or every bond (PPG)
-      u1   //!< the master only (underintegrated PBG = classical correspondence)
+      u1,  //!< the master only (underintegrated PBG = classical correspondence)
+      u2   //!< every member, quadratic WTE2 shape functions (section 6.5)
     };
 
     /** The VC correction function (eqs. 5.60-5.64). */
@@ -51,7 +52,12 @@ namespace pg
     Method method;
     Points points;
     /** First-order variational consistency (section 11). */
-    bool               variational_consistency;
+    bool variational_consistency;
+    /**
+     * Also second-order variational consistency, "VC2" (section 11.6);
+     * implies variational_consistency and Method::ppg2.
+     */
+    bool               second_order_consistency;
     CorrectionFunction correction_function;
     VCBoundary         vc_boundary;
     /** Bond correction (eq. 5.55) of the trial functions. */

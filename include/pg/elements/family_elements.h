@@ -77,10 +77,21 @@ namespace pg
     /**
      * Store the correction factors alpha^k of all particles (the solution
      * of the VC system) and correct the master gradients; from now on
-     * build() returns corrected tables.
+     * build() returns corrected tables. VC2 (PPG2 only) also passes the
+     * second-order factors alpha_2^k: the test gradients become
+     * g^{kkj} + phi^{kj} (alpha^k + alpha_2^k dX^{kj}) (section 11.6).
      */
     void
-    set_correction_factors(const std::vector<Tensor<1, dim>> &alpha);
+    set_correction_factors(
+      const std::vector<Tensor<1, dim>> &alpha,
+      const std::vector<Tensor<2, dim>> &second_order_alpha = {});
+
+    /**
+     * The effective correction function values phi^{ka} of family @p k,
+     * one per member (V1, V3 or V5 before the projector). Needs VC.
+     */
+    const std::vector<double> &
+    correction_function_values(const unsigned int k) const;
 
     /** The bonds and volumes of family @p k. */
     ShapeFunctions::FamilyGeometry<dim>

@@ -4,10 +4,12 @@
 #include <pg/base/global.h>
 #include <pg/materials/material.h>
 
+#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <functional>
 #include <vector>
 
 namespace pg
@@ -28,11 +30,13 @@ namespace pg
     reinit(const unsigned int n_nodes, const bool test_is_trial);
 
     /**
-     * Append an evaluation point with weight @p weight (volume units) and
-     * the trial vectors of all nodes (n_nodes entries).
+     * Append an evaluation point at @p point with weight @p weight (volume
+     * units) and the trial vectors of all nodes (n_nodes entries).
      */
     void
-    add_point(const double weight, const std::vector<Tensor<1, dim>> &trial);
+    add_point(const double                       weight,
+              const std::vector<Tensor<1, dim>> &trial,
+              const Point<dim>                  &point);
 
     /** Add a test vector of node @p a to the point added last. */
     void
@@ -44,7 +48,8 @@ namespace pg
     unsigned int                n_nodes;
     bool                        test_is_trial;
     std::vector<double>         weights;
-    std::vector<Tensor<1, dim>> trial; //!< n_points x n_nodes, row by row
+    std::vector<Point<dim>>     points; //!< X_q, reference configuration
+    std::vector<Tensor<1, dim>> trial;  //!< n_points x n_nodes, row by row
     std::vector<unsigned int>   test_offsets;
     std::vector<unsigned int>   test_nodes;
     std::vector<Tensor<1, dim>> test_vectors;
@@ -90,6 +95,17 @@ namespace pg
   void
   add_unit_stress_residual(const QuadratureTable<dim>  &table,
                            std::vector<Tensor<1, dim>> &d);
+
+  /**
+   * The internal force of a prescribed stress field: d_a += sum_q w_q
+   * P_q T^{qa} with P_q = @p stress(q) (first Piola-Kirchhoff, force per
+   * reference area). add_unit_stress_residual() is the case P = 1.
+   */
+  template <int dim>
+  void
+  add_stress_residual(const QuadratureTable<dim>                    &table,
+                      const std::function<Tensor<2, dim>(unsigned)> &stress,
+                      std::vector<Tensor<1, dim>>                   &d);
 } // namespace pg
 
 #endif

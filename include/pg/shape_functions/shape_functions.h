@@ -13,19 +13,21 @@
 namespace pg
 {
   /**
-   * First-order meshfree shape-function gradients of one family
-   * (pg-methods.md section 6, Table 5.1). All functions take the family in
+   * Meshfree shape-function gradients of one family (pg-methods.md
+   * section 6, Table 5.1): the first-order bases and the quadratic WTE2 of
+   * the U2 formulations. All functions take the family in
    * local numbering: member 0 is the master k, members 1..N its neighbours.
    */
   namespace ShapeFunctions
   {
-    /** The bases of Table 5.1 (first order). */
+    /** The bases of Table 5.1. */
     enum class Base
     {
       mte1, //!< moving Taylor expansion, eq. (5.52)
       mls1, //!< moving least squares with full derivative, eqs. (5.43)-(5.47)
       wls1, //!< weighted least squares, eq. (5.45)
-      wte1  //!< weighted Taylor expansion (classical correspondence, 4.3)
+      wte1, //!< weighted Taylor expansion (classical correspondence, 4.3)
+      wte2  //!< quadratic weighted Taylor expansion (U2, section 6.4)
     };
 
     /** "MTE1" -> Base::mte1, etc. */
@@ -48,7 +50,8 @@ namespace pg
      * Raw gradients g^{kji} (i = 0..N) of the base @p base of family k at
      * the evaluation point j = @p point (a local index). For every base the
      * gradients satisfy sum_i g^{kji} = 0 and sum_i dX^{ki} (x) g^{kji} = 1
-     * (linear consistency, eqs. 5.8, 5.9).
+     * (linear consistency, eqs. 5.8, 5.9); WTE2 also reproduces the
+     * gradient of every quadratic field at every point.
      *
      * Returns the condition number of the moment matrix (basis scaled to
      * the family size, so the number is dimensionless); the caller decides
