@@ -4,7 +4,7 @@ set output "doc/figures/inf_sup.png"
 set multiplot layout 1,2
 set logscale xy
 set xlabel "1/N"
-set ylabel "inf-sup value beta~ = sqrt(lambda_k)"
+set ylabel "inf-sup value beta_h = sqrt(lambda_k)" noenhanced
 set key bottom right
 set grid
 set xrange [0.025:0.6]
