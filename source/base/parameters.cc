@@ -576,9 +576,10 @@ namespace pg
                           Patterns::Double(0.),
                           "inf-sup: eigenvalues below this times the "
                           "largest count as zero (k - 1 in eq. 7.14). "
-                          "Round-off puts the zero eigenvalues near 1e-16 "
-                          "cond(S_h) lambda_max, the non-zero ones are "
-                          "above 1e-6 lambda_max for N <= 32.");
+                          "Measured for N <= 32 (doc/benchmarks/inf_sup.md): "
+                          "the zero eigenvalues are round-off, below 3e-13 "
+                          "lambda_max, the non-zero ones above 5e-6 "
+                          "lambda_max.");
       }
       prm.leave_subsection();
     }
