@@ -62,6 +62,18 @@ namespace pg
     double gradient_oscillation = 0;
     /** Largest VC correction factor |alpha^k| times the spacing. */
     double max_correction_factor = 0;
+    /**
+     * Inf-sup analysis (section 7.2.5): one entry per mesh N of the series
+     * in every array; NaN (null in summary.json) where a value does not
+     * exist (the slope of the first mesh, k_pm without a pressure space).
+     */
+    struct InfSup
+    {
+      std::string         pressure_space;
+      double              zero_tolerance = 0;
+      std::vector<double> N, n_dofs, n_free, n_pressure, n_zero, k_pm, beta,
+        slope, lambda_max, largest_zero;
+    } inf_sup;
   };
 
   /**

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace pg
 {
@@ -253,6 +255,26 @@ namespace pg
       out << "  \"max_eigenvalue\": " << json_number(s.max_eigenvalue)
           << ",\n  \"n_zero_eigenvalues\": " << s.n_zero_eigenvalues
           << ",\n  \"eigenvalues\": " << json_list(s.eigenvalues) << ",\n";
+    if (!s.inf_sup.N.empty())
+      {
+        const auto &i = s.inf_sup;
+        out << "  \"inf_sup\": {\"pressure_space\": \"" << i.pressure_space
+            << "\", \"zero_tolerance\": " << json_number(i.zero_tolerance);
+        for (const auto &[name, values] :
+             std::vector<std::pair<std::string, const std::vector<double> *>>{
+               {"N", &i.N},
+               {"n_dofs", &i.n_dofs},
+               {"n_free", &i.n_free},
+               {"n_pressure", &i.n_pressure},
+               {"n_zero", &i.n_zero},
+               {"k_pm", &i.k_pm},
+               {"beta", &i.beta},
+               {"slope", &i.slope},
+               {"lambda_max", &i.lambda_max},
+               {"largest_zero", &i.largest_zero}})
+          out << ",\n    \"" << name << "\": " << json_list(*values);
+        out << "},\n";
+      }
     if (s.have_errors)
       out << "  \"errors\": {\"L2\": " << json_number(s.L2)
           << ", \"H1\": " << json_number(s.H1)
