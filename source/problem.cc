@@ -143,8 +143,30 @@ namespace pg
     Tensor<2, dim>
     particle_deformation_gradient(const unsigned int k) const;
 
+    /** Is @p id in 'Neumann' or in 'Neumann stress'? */
+    /**
+     * The Cauchy stress at every vertex from each side: the average over the
+     * adjacent Q1 cells (FE side) and the particle value (PG side). Writes
+     * the vertices of 'Output/Stress along boundaries' to
+     * stress_along_boundaries.txt (with the exact stress if errors are
+     * computed) and stores the largest jump of sigma_xx between the two
+     * sides at interface vertices in the summary.
+     */
+    void
+    write_nodal_stresses();
+
     bool
     is_neumann(const types::boundary_id id) const;
+
+    /**
+     * The prescribed traction on boundary @p id at @p point with the
+     * outward unit normal @p normal: the 'Traction' function, or
+     * sigma . n from 'Boundary stress' for the 'Neumann stress' ids.
+     */
+    Tensor<1, dim>
+    prescribed_traction(const types::boundary_id id,
+                        const Point<dim>        &point,
+                        const Tensor<1, dim>    &normal) const;
 
     bool
     has_neumann_face(
@@ -1007,6 +1029,7 @@ namespace pg
     for (const Functions::ParsedFunction<dim> *function :
          {&prm.prescribed_displacement,
           &prm.traction,
+          &prm.boundary_stress,
           &prm.body_force,
           &prm.exact_solution})
       const_cast<Functions::ParsedFunction<dim> *>(function)->set_time(t);
@@ -1040,7 +1063,7 @@ namespace pg
         , fe_face_values(fe_scalar,
                          QGauss<dim - 1>(2),
                          update_values | update_quadrature_points |
-                           update_JxW_values)
+                           update_normal_vectors | update_JxW_values)
       {}
       Scratch(const Scratch &other)
         : fe_values(other.fe_values.get_fe(),
@@ -1072,9 +1095,34 @@ namespace pg
   bool
   Problem<dim>::Implementation::is_neumann(const types::boundary_id id) const
   {
-    return std::find(prm.boundary_conditions.neumann.begin(),
-                     prm.boundary_conditions.neumann.end(),
-                     id) != prm.boundary_conditions.neumann.end();
+    const auto &bc = prm.boundary_conditions;
+    return std::find(bc.neumann.begin(), bc.neumann.end(), id) !=
+             bc.neumann.end() ||
+           std::find(bc.neumann_stress.begin(), bc.neumann_stress.end(), id) !=
+             bc.neumann_stress.end();
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  Problem<dim>::Implementation::prescribed_traction(
+    const types::boundary_id id,
+    const Point<dim>        &point,
+    const Tensor<1, dim>    &normal) const
+  {
+    const auto    &stress_ids = prm.boundary_conditions.neumann_stress;
+    Tensor<1, dim> t;
+    if (std::find(stress_ids.begin(), stress_ids.end(), id) == stress_ids.end())
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          t[c] = prm.traction.value(point, c);
+        return t;
+      }
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        t[i] += prm.boundary_stress.value(point, i * dim + j) * normal[j];
+    return t;
   }
 
 
@@ -1100,7 +1148,6 @@ namespace pg
     FEFaceValues<dim>                                    &fe_face_values,
     Vector<double>                                       &residual) const
   {
-    Vector<double> f(dim);
     for (const unsigned int face : cell->face_indices())
       if (cell->face(face)->at_boundary() &&
           is_neumann(cell->face(face)->boundary_id()))
@@ -1110,10 +1157,13 @@ namespace pg
             face);
           for (const unsigned int q : fe_face_values.quadrature_point_indices())
             {
-              prm.traction.vector_value(fe_face_values.quadrature_point(q), f);
+              const Tensor<1, dim> f =
+                prescribed_traction(cell->face(face)->boundary_id(),
+                                    fe_face_values.quadrature_point(q),
+                                    fe_face_values.normal_vector(q));
               for (unsigned int b = 0; b < cell->n_vertices(); ++b)
                 for (unsigned int c = 0; c < dim; ++c)
-                  residual(b * dim + c) -= f(c) *
+                  residual(b * dim + c) -= f[c] *
                                            fe_face_values.shape_value(b, q) *
                                            fe_face_values.JxW(q);
             }
@@ -1132,7 +1182,6 @@ namespace pg
     rhs   = 0;
     force = 0;
     failure.clear();
-    const auto &traction   = prm.traction;
     const auto &body_force = prm.body_force;
 
     const auto copier = [&](const Copy &copy) {
@@ -1283,7 +1332,10 @@ namespace pg
           for (const auto &[id, area] : particles.boundary_area_vectors(k))
             if (is_neumann(id))
               {
-                traction.vector_value(particles.position(k), f);
+                const Tensor<1, dim> t =
+                  prescribed_traction(id,
+                                      particles.position(k),
+                                      area / area.norm());
                 // On the FE/meshfree interface the VC targets d^k are the
                 // geometric area vectors (interface plus surface part), so
                 // the consistent load there is the geometric one.
@@ -1291,7 +1343,7 @@ namespace pg
                                    area.norm() :
                                    boundary_area_weights[k].at(id);
                 for (unsigned int c = 0; c < dim; ++c)
-                  local(c) += a * f(c);
+                  local(c) += a * t[c];
               }
         for (unsigned int c = 0; c < dim; ++c)
           dofs[c] = particles.dof(k, c);
@@ -1415,6 +1467,90 @@ namespace pg
             F[i][j] += y * B[b][j];
         }
     return F;
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::write_nodal_stresses()
+  {
+    const unsigned int        n_vertices = triangulation.n_vertices();
+    std::vector<Tensor<2, 3>> fe_stress(n_vertices);
+    std::vector<unsigned int> fe_cells(n_vertices, 0);
+    // QTrapezoid's points are the vertices in deal.II's numbering.
+    FEValues<dim> fe_values(fe, QTrapezoid<dim>(), update_gradients);
+    std::vector<Tensor<2, dim>> gradients(fe_values.n_quadrature_points);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!meshfree[cell->active_cell_index()])
+        {
+          fe_values.reinit(cell);
+          fe_values[FEValuesExtractors::Vector(0)]
+            .get_function_gradients(u_full, gradients);
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              fe_stress[cell->vertex_index(v)] += material->cauchy_stress(
+                unit_symmetric_tensor<dim>() + gradients[v]);
+              ++fe_cells[cell->vertex_index(v)];
+            }
+        }
+    std::vector<int> particle_at(n_vertices, -1);
+    for (unsigned int k = 0; k < particles.n_particles(); ++k)
+      particle_at[particles.vertex(k)] = k;
+
+    summary.max_interface_stress_jump = 0;
+    for (unsigned int k = 0; k < particles.n_particles(); ++k)
+      if (fe_cells[particles.vertex(k)] > 0)
+        summary.max_interface_stress_jump =
+          std::max(summary.max_interface_stress_jump,
+                   std::abs(material->cauchy_stress(
+                              particle_deformation_gradient(k))[0][0] -
+                            fe_stress[particles.vertex(k)][0][0] /
+                              fe_cells[particles.vertex(k)]));
+
+    const auto &ids = prm.output.stress_boundaries;
+    if (!root || ids.empty())
+      return;
+    std::ofstream table(prm.output.directory + "/stress_along_boundaries.txt");
+    table << "# Cauchy stress at the vertices of the boundaries "
+          << Patterns::Tools::Convert<std::vector<int>>::to_string(
+               std::vector<int>(ids.begin(), ids.end()))
+          << " (particles: the particle value; FE vertices: the average of "
+             "the adjacent cells)\n# boundary_id x y"
+          << (dim == 3 ? " z" : "") << " sigma_xx sigma_yy sigma_xy"
+          << (prm.compute_errors ? " exact_xx exact_yy exact_xy" : "")
+          << " side\n"
+          << std::setprecision(8);
+    std::vector<bool> written(n_vertices, false);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            std::find(ids.begin(), ids.end(), cell->face(f)->boundary_id()) !=
+              ids.end())
+          for (const unsigned int v : cell->face(f)->vertex_indices())
+            {
+              const unsigned int vertex = cell->face(f)->vertex_index(v);
+              if (written[vertex])
+                continue;
+              written[vertex]       = true;
+              const bool         pg = particle_at[vertex] >= 0;
+              const Tensor<2, 3> sigma =
+                pg ? material->cauchy_stress(
+                       particle_deformation_gradient(particle_at[vertex])) :
+                     fe_stress[vertex] / fe_cells[vertex];
+              table << static_cast<int>(cell->face(f)->boundary_id()) << " "
+                    << cell->face(f)->vertex(v) << " " << sigma[0][0] << " "
+                    << sigma[1][1] << " " << sigma[0][1];
+              if (prm.compute_errors)
+                {
+                  const Tensor<2, 3> exact = material->cauchy_stress(
+                    unit_symmetric_tensor<dim>() +
+                    exact_displacement_gradient(cell->face(f)->vertex(v)));
+                  table << " " << exact[0][0] << " " << exact[1][1] << " "
+                        << exact[0][1];
+                }
+              table << (pg ? " PG\n" : " FE\n");
+            }
   }
 
 
@@ -2048,6 +2184,8 @@ namespace pg
               }
           }
       }
+
+    write_nodal_stresses();
 
     // Final report: normalised where a natural reference exists.
     for (const auto &[name, value] : summary.points)

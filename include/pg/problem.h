@@ -60,6 +60,12 @@ namespace pg
      * spurious (zero-energy) modes and defective shape functions raise it.
      */
     double gradient_oscillation = 0;
+    /**
+     * Largest |sigma_xx| difference between the particle value and the
+     * average of the adjacent Q1 cells at FE/meshfree interface vertices
+     * (stress units; 0 without an interface).
+     */
+    double max_interface_stress_jump = 0;
     /** Largest VC correction factor |alpha^k| times the spacing. */
     double max_correction_factor = 0;
     /**

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -360,6 +361,18 @@ namespace pg
                           "subsection 'Traction' (first Piola traction per "
                           "reference area).");
         prm.declare_entry(
+          "Neumann stress",
+          "",
+          Patterns::Anything(),
+          "Boundary ids loaded by the traction sigma . n, with sigma the "
+          "stress of subsection 'Boundary stress' (dim*dim components, "
+          "row-major sigma_ij; first Piola stress, which is the Cauchy "
+          "stress under small strain) and n the outward unit normal of the "
+          "reference boundary. One stress function gives the right traction "
+          "on boundaries of every orientation, e.g. an exact solution's "
+          "stress on the two outer edges of the plate with a hole. An id "
+          "belongs to 'Neumann' or to 'Neumann stress', not to both.");
+        prm.declare_entry(
           "Particle traction area",
           "automatic",
           Patterns::Selection("automatic|geometry|test functions|exact stress"),
@@ -427,6 +440,16 @@ namespace pg
         symmetry =
           parse_ids(prm.get("Symmetry"), "Boundary conditions/Symmetry");
         neumann = parse_ids(prm.get("Neumann"), "Boundary conditions/Neumann");
+        neumann_stress = parse_ids(prm.get("Neumann stress"),
+                                   "Boundary conditions/Neumann stress");
+        for (const types::boundary_id id : neumann_stress)
+          AssertThrow(std::find(neumann.begin(), neumann.end(), id) ==
+                        neumann.end(),
+                      ExcBadParameter("Boundary conditions/Neumann stress",
+                                      prm.get("Neumann stress"),
+                                      "boundary " + std::to_string(id) +
+                                        " is also in 'Neumann'; give each "
+                                        "loaded boundary one traction."));
         particle_traction_area = prm.get("Particle traction area");
       }
       prm.leave_subsection();
@@ -639,6 +662,16 @@ namespace pg
                           "Named reference points whose displacement is "
                           "reported: 'name: x, y[, z]; name: ...', e.g. "
                           "'tip: 48, 60'.");
+        prm.declare_entry("Stress along boundaries",
+                          "",
+                          Patterns::Anything(),
+                          "Boundary ids whose vertices get a row in "
+                          "stress_along_boundaries.txt at the end of the run: "
+                          "position, Cauchy stress (particle value at "
+                          "particles, the average of the adjacent Q1 cells "
+                          "elsewhere) and, with 'Compute errors', the exact "
+                          "stress. E.g. the symmetry lines of the plate with "
+                          "a hole: '1, 2'.");
       }
       prm.leave_subsection();
     }
@@ -653,6 +686,8 @@ namespace pg
         directory = prm.get("Directory");
         vtu       = prm.get_bool("VTU");
         points.clear();
+        stress_boundaries      = parse_ids(prm.get("Stress along boundaries"),
+                                      "Output/Stress along boundaries");
         const std::string text = prm.get("Points");
         for (const std::string &item : Utilities::split_string_list(text, ';'))
           {
@@ -687,6 +722,7 @@ namespace pg
       : dimension(dim)
       , prescribed_displacement(dim)
       , traction(dim)
+      , boundary_stress(dim * dim)
       , body_force(dim)
       , exact_solution(dim)
       , compute_errors(false)
@@ -714,6 +750,9 @@ namespace pg
         prm.leave_subsection();
         prm.enter_subsection("Traction");
         Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
+        prm.leave_subsection();
+        prm.enter_subsection("Boundary stress");
+        Functions::ParsedFunction<dim>::declare_parameters(prm, dim * dim);
         prm.leave_subsection();
         prm.enter_subsection("Body force");
         Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
@@ -765,6 +804,9 @@ namespace pg
         prm.leave_subsection();
         prm.enter_subsection("Traction");
         traction.parse_parameters(prm);
+        prm.leave_subsection();
+        prm.enter_subsection("Boundary stress");
+        boundary_stress.parse_parameters(prm);
         prm.leave_subsection();
         prm.enter_subsection("Body force");
         body_force.parse_parameters(prm);

@@ -236,6 +236,8 @@ namespace pg
         << ",\n"
         << "  \"max_interior_unit_stress_residual\": "
         << json_number(s.max_interior_unit_stress_residual) << ",\n"
+        << "  \"max_interface_stress_jump\": "
+        << json_number(s.max_interface_stress_jump) << ",\n"
         << "  \"max_interior_second_order_residual\": "
         << json_number(s.max_interior_second_order_residual) << ",\n";
     out << "  \"points\": {";

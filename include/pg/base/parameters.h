@@ -101,6 +101,8 @@ namespace pg
       std::vector<std::pair<types::boundary_id, std::vector<bool>>> dirichlet;
       std::vector<types::boundary_id>                               symmetry;
       std::vector<types::boundary_id>                               neumann;
+      /** Boundary ids loaded by sigma . n from 'Boundary stress'. */
+      std::vector<types::boundary_id> neumann_stress;
       /**
        * How a traction loads the particles of meshfree boundary faces:
        * 'geometry' (the FE-consistent load, integral of T N_k over the
@@ -181,6 +183,8 @@ namespace pg
       bool        vtu;
       /** Named reference points, each with dim coordinates. */
       std::vector<std::pair<std::string, std::vector<double>>> points;
+      /** Boundary ids whose vertex stresses go to a table. */
+      std::vector<types::boundary_id> stress_boundaries;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -214,6 +218,11 @@ namespace pg
       Functions::ParsedFunction<dim> prescribed_displacement;
       /** Dead first Piola traction per reference area (dim components). */
       Functions::ParsedFunction<dim> traction;
+      /**
+       * Stress whose traction sigma . n loads the 'Neumann stress'
+       * boundaries (dim*dim components, row-major sigma_ij).
+       */
+      Functions::ParsedFunction<dim> boundary_stress;
       /** Body force per reference volume, rho_0 b (dim components). */
       Functions::ParsedFunction<dim> body_force;
       /** Exact displacement for error norms (dim components). */
