@@ -100,6 +100,15 @@ namespace pg
     void
     correct_second_order_consistency();
 
+    /**
+     * Hand the VC factors (and the VC2 factors, if any) to the family
+     * elements, record max |alpha^k| h, rebuild the family tables and d^k.
+     */
+    void
+    apply_correction_factors(
+      const std::vector<Tensor<1, dim>> &alpha,
+      const std::vector<Tensor<2, dim>> &second_order_alpha = {});
+
     /** Set the time of every parsed function to the load factor @p t. */
     void
     set_load_factor(const double t) const;
@@ -143,18 +152,19 @@ namespace pg
     Tensor<2, dim>
     particle_deformation_gradient(const unsigned int k) const;
 
-    /** Is @p id in 'Neumann' or in 'Neumann stress'? */
     /**
      * The Cauchy stress at every vertex from each side: the average over the
      * adjacent Q1 cells (FE side) and the particle value (PG side). Writes
-     * the vertices of 'Output/Stress along boundaries' to
+     * the vertices of 'Output/Stress along boundaries' (particle values
+     * from @p particle_F, the deformation gradients at the masters) to
      * stress_along_boundaries.txt (with the exact stress if errors are
      * computed) and stores the largest jump of sigma_xx between the two
      * sides at interface vertices in the summary.
      */
     void
-    write_nodal_stresses();
+    write_nodal_stresses(const std::vector<Tensor<2, dim>> &particle_F);
 
+    /** Is @p id in 'Neumann' or in 'Neumann stress'? */
     bool
     is_neumann(const types::boundary_id id) const;
 
@@ -754,15 +764,27 @@ namespace pg
                                     families,
                                     *family_elements,
                                     fixed);
-    summary.max_correction_factor = 0;
-    for (unsigned int k = 0; k < n; ++k)
-      summary.max_correction_factor =
-        std::max(summary.max_correction_factor,
-                 correction.alpha[k].norm() * particles.spacing(k));
     summary.max_interior_second_order_residual =
       correction.max_second_order_residual_after;
-    family_elements->set_correction_factors(correction.alpha,
-                                            correction.second_order_alpha);
+    apply_correction_factors(correction.alpha, correction.second_order_alpha);
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::apply_correction_factors(
+    const std::vector<Tensor<1, dim>> &alpha,
+    const std::vector<Tensor<2, dim>> &second_order_alpha)
+  {
+    // The size of the correction, relative to the gradients (~1/h): large
+    // values mean strongly modified test functions.
+    summary.max_correction_factor = 0;
+    for (unsigned int k = 0; k < alpha.size(); ++k)
+      summary.max_correction_factor =
+        std::max(summary.max_correction_factor,
+                 alpha[k].norm() * particles.spacing(k));
+    family_elements->set_correction_factors(alpha, second_order_alpha);
     for (unsigned int f = 0; f < owned_families.size(); ++f)
       family_elements->build(owned_families[f], family_tables[f]);
     compute_unit_stress_residual();
@@ -1005,17 +1027,7 @@ namespace pg
                            "boundary option of 'Formulation' in subsection "
                            "'Discretization' (p, s or sn)."));
 
-    // The size of the correction, relative to the gradients (~1/h): large
-    // values mean strongly modified test functions.
-    summary.max_correction_factor = 0;
-    for (unsigned int k = 0; k < n; ++k)
-      summary.max_correction_factor =
-        std::max(summary.max_correction_factor,
-                 alpha[k].norm() * particles.spacing(k));
-    family_elements->set_correction_factors(alpha);
-    for (unsigned int f = 0; f < owned_families.size(); ++f)
-      family_elements->build(owned_families[f], family_tables[f]);
-    compute_unit_stress_residual();
+    apply_correction_factors(alpha);
   }
 
 
@@ -1473,7 +1485,8 @@ namespace pg
 
   template <int dim>
   void
-  Problem<dim>::Implementation::write_nodal_stresses()
+  Problem<dim>::Implementation::write_nodal_stresses(
+    const std::vector<Tensor<2, dim>> &particle_F)
   {
     const unsigned int        n_vertices = triangulation.n_vertices();
     std::vector<Tensor<2, 3>> fe_stress(n_vertices);
@@ -1503,8 +1516,7 @@ namespace pg
       if (fe_cells[particles.vertex(k)] > 0)
         summary.max_interface_stress_jump =
           std::max(summary.max_interface_stress_jump,
-                   std::abs(material->cauchy_stress(
-                              particle_deformation_gradient(k))[0][0] -
+                   std::abs(material->cauchy_stress(particle_F[k])[0][0] -
                             fe_stress[particles.vertex(k)][0][0] /
                               fe_cells[particles.vertex(k)]));
 
@@ -1535,8 +1547,7 @@ namespace pg
               written[vertex]       = true;
               const bool         pg = particle_at[vertex] >= 0;
               const Tensor<2, 3> sigma =
-                pg ? material->cauchy_stress(
-                       particle_deformation_gradient(particle_at[vertex])) :
+                pg ? material->cauchy_stress(particle_F[particle_at[vertex]]) :
                      fe_stress[vertex] / fe_cells[vertex];
               table << static_cast<int>(cell->face(f)->boundary_id()) << " "
                     << cell->face(f)->vertex(v) << " " << sigma[0][0] << " "
@@ -1607,10 +1618,7 @@ namespace pg
   {
     // eq. (7.3): FE cells by Gauss quadrature, particles by their volume
     // with the trial gradient at the master.
-    const auto &exact          = prm.exact_solution;
-    const auto  exact_gradient = [&](const Point<dim> &p) {
-      return exact_displacement_gradient(p);
-    };
+    const auto                      &exact = prm.exact_solution;
     double                           e0 = 0, e1 = 0, n0 = 0, n1 = 0;
     const QGauss<dim>                quadrature(3);
     FEValues<dim>                    fe_values(fe,
@@ -1630,7 +1638,7 @@ namespace pg
           {
             const Point<dim> &p = fe_values.quadrature_point(q);
             exact.vector_value(p, exact_value);
-            const Tensor<2, dim> G = exact_gradient(p);
+            const Tensor<2, dim> G = exact_displacement_gradient(p);
             for (unsigned int c = 0; c < dim; ++c)
               {
                 e0 +=
@@ -1651,7 +1659,7 @@ namespace pg
             e0 += std::pow(exact_value(c) - u_full[particles.dof(k, c)], 2) * V;
             n0 += std::pow(exact_value(c), 2) * V;
           }
-        const Tensor<2, dim> G = exact_gradient(p);
+        const Tensor<2, dim> G = exact_displacement_gradient(p);
         e1 += (G - (particle_deformation_gradient(k) -
                     unit_symmetric_tensor<dim>()))
                 .norm_square() *
@@ -2143,11 +2151,11 @@ namespace pg
 
     // The oscillation indicator and a plain table of the particle fields
     // (for plots) at the final state; every rank knows all particles.
+    std::vector<Tensor<2, dim>> F(particles.n_particles());
+    for (unsigned int k = 0; k < F.size(); ++k)
+      F[k] = particle_deformation_gradient(k);
     if (particles.n_particles() > 0)
       {
-        std::vector<Tensor<2, dim>> F(particles.n_particles());
-        for (unsigned int k = 0; k < F.size(); ++k)
-          F[k] = particle_deformation_gradient(k);
         double oscillation = 0, deformation = 0;
         for (unsigned int k = 0; k < F.size(); ++k)
           {
@@ -2185,7 +2193,7 @@ namespace pg
           }
       }
 
-    write_nodal_stresses();
+    write_nodal_stresses(F);
 
     // Final report: normalised where a natural reference exists.
     for (const auto &[name, value] : summary.points)
