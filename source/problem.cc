@@ -4,6 +4,7 @@
 #include <pg/base/formulation_code.h>
 #include <pg/base/linear_algebra.h>
 #include <pg/elements/family_elements.h>
+#include <pg/elements/kernel_cost.h>
 #include <pg/elements/q1_cell.h>
 #include <pg/elements/quadrature_table.h>
 #include <pg/elements/second_order_correction.h>
@@ -121,6 +122,10 @@ namespace pg
 
     void
     compute_errors();
+
+    /** Entries and flops of the local tangents (summary.assembly_cost). */
+    void
+    compute_assembly_cost();
 
     void
     write_files(const unsigned int step, const double t);
@@ -445,6 +450,7 @@ namespace pg
     force.reinit(owned_dofs, comm);
     u_full.reinit(dof_handler.n_dofs());
     time_setup += timer.wall_time() - time_vc;
+    compute_assembly_cost();
 
     // The echo of what was understood (no wall times: tests compare it).
     unsigned int min_family = 0, max_family = 0;
@@ -1219,6 +1225,7 @@ namespace pg
         failure = e.what();
     };
 
+    Timer loop_timer;
     using CellIterator = typename std::vector<
       typename DoFHandler<dim>::active_cell_iterator>::const_iterator;
     WorkStream::run(
@@ -1272,6 +1279,13 @@ namespace pg
       Scratch<dim>(fe_scalar),
       Copy());
 
+    auto &cost = summary.assembly_cost;
+    if (with_matrix)
+      {
+        ++cost.n_assemblies;
+        cost.fe_seconds += loop_timer.wall_time();
+      }
+    loop_timer.restart();
     using FamilyIterator = std::vector<unsigned int>::const_iterator;
     std::vector<unsigned int> family_index(owned_families.size());
     for (unsigned int f = 0; f < family_index.size(); ++f)
@@ -1312,6 +1326,8 @@ namespace pg
       copier,
       Scratch<dim>(fe_scalar),
       Copy());
+    if (with_matrix)
+      cost.family_seconds += loop_timer.wall_time();
 
     // Particle loads: the body force V^k rho_0 b and, with tractions through
     // the test functions, T_b c_b with c_b the area of boundary part b in
@@ -1449,6 +1465,7 @@ namespace pg
             return false;
           }
         time_solve += timer.wall_time();
+        ++summary.assembly_cost.n_solves;
         zero_constraints.distribute(update);
         solution_owned += update;
         update_full_solution();
@@ -1520,6 +1537,50 @@ namespace pg
                             fe_stress[particles.vertex(k)][0][0] /
                               fe_cells[particles.vertex(k)]));
 
+    const auto nodal_stress = [&](const unsigned int vertex) {
+      return particle_at[vertex] >= 0 ?
+               material->cauchy_stress(particle_F[particle_at[vertex]]) :
+               Tensor<2, 3>(fe_stress[vertex] / fe_cells[vertex]);
+    };
+    const auto exact_stress = [&](const Point<dim> &p) {
+      return material->cauchy_stress(unit_symmetric_tensor<dim>() +
+                                     exact_displacement_gradient(p));
+    };
+    const auto in_plane = [](const Tensor<2, 3> &sigma) {
+      std::vector<double> values;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          values.push_back(sigma[i][j]);
+      return values;
+    };
+
+    // the stress at the vertex nearest each named point
+    summary.point_stresses.clear();
+    summary.point_exact_stresses.clear();
+    const auto &vertices = triangulation.get_vertices();
+    const auto &used     = triangulation.get_used_vertices();
+    for (const auto &[name, coordinates] : prm.output.points)
+      {
+        Point<dim> p;
+        for (unsigned int c = 0; c < dim; ++c)
+          p[c] = coordinates[c];
+        unsigned int nearest = numbers::invalid_unsigned_int;
+        for (unsigned int v = 0; v < vertices.size(); ++v)
+          if (used[v] && (particle_at[v] >= 0 || fe_cells[v] > 0) &&
+              (nearest == numbers::invalid_unsigned_int ||
+               p.distance_square(vertices[v]) <
+                 p.distance_square(vertices[nearest])))
+            nearest = v;
+        if (nearest == numbers::invalid_unsigned_int)
+          continue;
+        summary.point_stresses.emplace_back(name,
+                                            in_plane(nodal_stress(nearest)));
+        if (prm.compute_errors)
+          summary.point_exact_stresses.emplace_back(name,
+                                                    in_plane(exact_stress(
+                                                      vertices[nearest])));
+      }
+
     const auto &ids = prm.output.stress_boundaries;
     if (!root || ids.empty())
       return;
@@ -1544,19 +1605,16 @@ namespace pg
               const unsigned int vertex = cell->face(f)->vertex_index(v);
               if (written[vertex])
                 continue;
-              written[vertex]       = true;
-              const bool         pg = particle_at[vertex] >= 0;
-              const Tensor<2, 3> sigma =
-                pg ? material->cauchy_stress(particle_F[particle_at[vertex]]) :
-                     fe_stress[vertex] / fe_cells[vertex];
+              written[vertex]          = true;
+              const bool         pg    = particle_at[vertex] >= 0;
+              const Tensor<2, 3> sigma = nodal_stress(vertex);
               table << static_cast<int>(cell->face(f)->boundary_id()) << " "
                     << cell->face(f)->vertex(v) << " " << sigma[0][0] << " "
                     << sigma[1][1] << " " << sigma[0][1];
               if (prm.compute_errors)
                 {
-                  const Tensor<2, 3> exact = material->cauchy_stress(
-                    unit_symmetric_tensor<dim>() +
-                    exact_displacement_gradient(cell->face(f)->vertex(v)));
+                  const Tensor<2, 3> exact =
+                    exact_stress(cell->face(f)->vertex(v));
                   table << " " << exact[0][0] << " " << exact[1][1] << " "
                         << exact[0][1];
                 }
@@ -1614,12 +1672,54 @@ namespace pg
 
   template <int dim>
   void
+  Problem<dim>::Implementation::compute_assembly_cost()
+  {
+    auto &cost          = summary.assembly_cost;
+    cost.fe_entries     = 0;
+    cost.fe_flops       = 0;
+    cost.family_entries = 0;
+    cost.family_flops   = 0;
+    if (!owned_fe_cells.empty())
+      {
+        // every Q1 cell has the same table size
+        Scratch<dim> scratch(fe_scalar);
+        scratch.fe_values.reinit(
+          typename Triangulation<dim>::active_cell_iterator(
+            owned_fe_cells.front()));
+        fill_q1_table(scratch.fe_values, scratch.table);
+        cost.fe_entries =
+          owned_fe_cells.size() * tangent_entries(scratch.table);
+        cost.fe_flops = owned_fe_cells.size() * tangent_flops(scratch.table);
+      }
+    for (const auto &table : family_tables)
+      {
+        cost.family_entries += tangent_entries(table);
+        cost.family_flops += tangent_flops(table);
+      }
+    for (double *x : {&cost.fe_entries,
+                      &cost.fe_flops,
+                      &cost.family_entries,
+                      &cost.family_flops})
+      *x = Utilities::MPI::sum(*x, comm);
+  }
+
+
+
+  template <int dim>
+  void
   Problem<dim>::Implementation::compute_errors()
   {
     // eq. (7.3): FE cells by Gauss quadrature, particles by their volume
     // with the trial gradient at the master.
-    const auto                      &exact = prm.exact_solution;
-    double                           e0 = 0, e1 = 0, n0 = 0, n1 = 0;
+    const auto &exact = prm.exact_solution;
+    double      e0 = 0, e1 = 0, n0 = 0, n1 = 0, eE = 0, nE = 0;
+    // the energy norm of the linearised problem, G : A(1) : G
+    Tensor<2, dim> P0;
+    Tensor<4, dim> A0;
+    material->evaluate(unit_symmetric_tensor<dim>(), P0, A0);
+    const auto energy = [&A0](const Tensor<2, dim> &G) {
+      return scalar_product(G, double_contract<2, 0, 3, 1>(A0, G));
+    };
     const QGauss<dim>                quadrature(3);
     FEValues<dim>                    fe_values(fe,
                             quadrature,
@@ -1647,6 +1747,8 @@ namespace pg
               }
             e1 += (G - gradients[q]).norm_square() * fe_values.JxW(q);
             n1 += G.norm_square() * fe_values.JxW(q);
+            eE += energy(G - gradients[q]) * fe_values.JxW(q);
+            nE += energy(G) * fe_values.JxW(q);
           }
       }
     for (const unsigned int k : owned_families)
@@ -1660,11 +1762,12 @@ namespace pg
             n0 += std::pow(exact_value(c), 2) * V;
           }
         const Tensor<2, dim> G = exact_displacement_gradient(p);
-        e1 += (G - (particle_deformation_gradient(k) -
-                    unit_symmetric_tensor<dim>()))
-                .norm_square() *
-              V;
+        const Tensor<2, dim> e =
+          G - (particle_deformation_gradient(k) - unit_symmetric_tensor<dim>());
+        e1 += e.norm_square() * V;
         n1 += G.norm_square() * V;
+        eE += energy(e) * V;
+        nE += energy(G) * V;
       }
     summary.have_errors = true;
     summary.L2          = std::sqrt(Utilities::MPI::sum(e0, comm));
@@ -1673,6 +1776,10 @@ namespace pg
     const double norm1  = std::sqrt(Utilities::MPI::sum(n1, comm));
     summary.L2_relative = norm0 > 0 ? summary.L2 / norm0 : summary.L2;
     summary.H1_relative = norm1 > 0 ? summary.H1 / norm1 : summary.H1;
+    summary.energy     = std::sqrt(std::max(0., Utilities::MPI::sum(eE, comm)));
+    const double normE = std::sqrt(std::max(0., Utilities::MPI::sum(nE, comm)));
+    summary.energy_relative =
+      normE > 0 ? summary.energy / normE : summary.energy;
   }
 
 

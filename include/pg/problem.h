@@ -39,6 +39,37 @@ namespace pg
     std::map<types::boundary_id, std::vector<double>> reactions;
     bool                                              have_errors = false;
     double L2 = 0, H1 = 0, L2_relative = 0, H1_relative = 0;
+    /**
+     * Energy norm of the error, sqrt(int grad e : A(1) : grad e) with the
+     * material tangent A of the reference state (the strain energy of the
+     * linearised problem), and its ratio to the exact field's.
+     */
+    double energy = 0, energy_relative = 0;
+    /**
+     * name -> Cauchy stress (in-plane components, row-major) at the mesh
+     * vertex nearest the named point of 'Output/Points': the particle's
+     * value, or the average of the adjacent Q1 cells (as in
+     * stress_along_boundaries.txt).
+     */
+    std::vector<std::pair<std::string, std::vector<double>>> point_stresses;
+    /** The exact stress at the same vertices (with 'Compute errors'). */
+    std::vector<std::pair<std::string, std::vector<double>>>
+      point_exact_stresses;
+    /**
+     * The cost of the tangent assemblies (assemble() with the matrix): wall
+     * seconds of the loops over the Q1 cells and over the families (this
+     * rank's, summed over all assemblies, local kernel and scatter into the
+     * global matrix), and, per assembly and summed over all ranks, the
+     * entries of the local tangents and the floating point operations of
+     * the kernel (tangent_flops()).
+     */
+    struct AssemblyCost
+    {
+      unsigned int n_assemblies = 0, n_solves = 0;
+      double       fe_seconds = 0, family_seconds = 0;
+      double       fe_entries = 0, family_entries = 0;
+      double       fe_flops = 0, family_flops = 0;
+    } assembly_cost;
     /** Seconds: setup, shape_functions, assembly, solve, total. */
     std::map<std::string, double> timing;
     /** Largest |d^k| at interior particles, divided by spacing^(dim-1). */

@@ -18,6 +18,8 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <limits>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -372,6 +374,98 @@ namespace pg
 
 
 
+      /**
+       * 'Distortion': GridTools::distort_random() moves every interior vertex
+       * by 'Distortion' times its shortest adjacent edge, in a random
+       * direction. Where that makes a cell non-convex (cells with angles
+       * well above 90 degrees, as near the corners of the plate with a
+       * hole), the vertices of that cell are drawn again from their
+       * original positions, up to the same distance, until every cell is
+       * convex (at most 100 rounds; then the error names the cell). The
+       * random engines are seeded by 'Random seed' and visit the vertices
+       * in their global order; for a parallel::shared::Triangulation every
+       * rank moves every vertex, so all ranks end up with the same mesh.
+       */
+      template <int dim>
+      void
+      distort(const Parameters::Geometry &parameters,
+              Triangulation<dim>         &triangulation)
+      {
+        const std::vector<Point<dim>> original = triangulation.get_vertices();
+        std::vector<double>           shortest_edge(original.size(),
+                                          std::numeric_limits<double>::max());
+        std::vector<bool>             on_boundary(original.size(), false);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            for (const unsigned int l : cell->line_indices())
+              for (const unsigned int v : {0U, 1U})
+                shortest_edge[cell->line(l)->vertex_index(v)] =
+                  std::min(shortest_edge[cell->line(l)->vertex_index(v)],
+                           cell->line(l)->diameter());
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary())
+                for (const unsigned int v : cell->face(f)->vertex_indices())
+                  on_boundary[cell->face(f)->vertex_index(v)] = true;
+          }
+
+        GridTools::distort_random(parameters.distortion,
+                                  triangulation,
+                                  /*keep_boundary=*/true,
+                                  parameters.random_seed);
+
+        std::mt19937                           engine(parameters.random_seed);
+        std::uniform_real_distribution<double> uniform(-1., 1.);
+        for (unsigned int round = 0;; ++round)
+          {
+            std::vector<bool> redrawn(original.size(), false);
+            typename Triangulation<dim>::active_cell_iterator inverted;
+            bool                                              found = false;
+            for (const auto &cell : triangulation.active_cell_iterators())
+              if (is_inverted<dim>(cell))
+                {
+                  inverted = cell;
+                  found    = true;
+                  if (round == 100)
+                    break;
+                  for (const unsigned int v : cell->vertex_indices())
+                    {
+                      const unsigned int i = cell->vertex_index(v);
+                      if (on_boundary[i] || redrawn[i])
+                        continue;
+                      // a uniform point of the ball of the allowed radius
+                      Tensor<1, dim> shift;
+                      do
+                        for (unsigned int d = 0; d < dim; ++d)
+                          shift[d] = uniform(engine);
+                      while (shift.norm_square() > 1.);
+                      cell->vertex(v) = original[i] + parameters.distortion *
+                                                        shortest_edge[i] *
+                                                        shift;
+                      redrawn[i] = true;
+                    }
+                }
+            if (!found)
+              return;
+            if (round == 100)
+              {
+                std::ostringstream centre;
+                centre << inverted->center();
+                AssertThrow(false,
+                            ExcBadParameter(
+                              "Geometry/Distortion",
+                              join(std::vector<double>{parameters.distortion}),
+                              "it leaves the cell with centre (" +
+                                centre.str() +
+                                ") of this mesh non-convex even after "
+                                "100 new random draws of its vertices; use "
+                                "a smaller value in subsection "
+                                "'Geometry'."));
+              }
+          }
+      }
+
+
+
       /** A parsed 'Meshfree region'. */
       template <int dim>
       struct MeshfreeRegion
@@ -562,34 +656,7 @@ namespace pg
       triangulation.refine_global(parameters.global_refinement);
 
       if (parameters.distortion > 0.)
-        {
-          // The shift of each vertex is 'Distortion' times its shortest
-          // adjacent edge. The random engine is seeded by 'Random seed' and
-          // visits the vertices in their global order; for a
-          // parallel::shared::Triangulation every rank moves every vertex,
-          // so all ranks end up with the same mesh.
-          GridTools::distort_random(parameters.distortion,
-                                    triangulation,
-                                    /*keep_boundary=*/true,
-                                    parameters.random_seed);
-
-          for (const auto &cell : triangulation.active_cell_iterators())
-            if (is_inverted<dim>(cell))
-              {
-                std::ostringstream centre;
-                centre << cell->center();
-                AssertThrow(false,
-                            ExcBadParameter(
-                              "Geometry/Distortion",
-                              join(std::vector<double>{parameters.distortion}),
-                              "it inverts the cell with centre (" +
-                                centre.str() +
-                                ") of this mesh; use a smaller "
-                                "value or another 'Random "
-                                "seed' in subsection "
-                                "'Geometry'."));
-              }
-        }
+        distort(parameters, triangulation);
     }
 
 

@@ -240,11 +240,21 @@ namespace pg
         << json_number(s.max_interface_stress_jump) << ",\n"
         << "  \"max_interior_second_order_residual\": "
         << json_number(s.max_interior_second_order_residual) << ",\n";
-    out << "  \"points\": {";
-    for (unsigned int i = 0; i < s.points.size(); ++i)
-      out << (i > 0 ? ", " : "") << "\"" << s.points[i].first
-          << "\": " << json_list(s.points[i].second);
-    out << "},\n  \"reactions\": {";
+    const auto json_named_lists =
+      [&out](
+        const std::string                                              &key,
+        const std::vector<std::pair<std::string, std::vector<double>>> &v) {
+        out << "  \"" << key << "\": {";
+        for (unsigned int i = 0; i < v.size(); ++i)
+          out << (i > 0 ? ", " : "") << "\"" << v[i].first
+              << "\": " << json_list(v[i].second);
+        out << "},\n";
+      };
+    json_named_lists("points", s.points);
+    json_named_lists("point_stresses", s.point_stresses);
+    if (!s.point_exact_stresses.empty())
+      json_named_lists("point_exact_stresses", s.point_exact_stresses);
+    out << "  \"reactions\": {";
     bool first = true;
     for (const auto &r : s.reactions)
       {
@@ -281,7 +291,19 @@ namespace pg
       out << "  \"errors\": {\"L2\": " << json_number(s.L2)
           << ", \"H1\": " << json_number(s.H1)
           << ", \"L2_relative\": " << json_number(s.L2_relative)
-          << ", \"H1_relative\": " << json_number(s.H1_relative) << "},\n";
+          << ", \"H1_relative\": " << json_number(s.H1_relative)
+          << ", \"energy\": " << json_number(s.energy)
+          << ", \"energy_relative\": " << json_number(s.energy_relative)
+          << "},\n";
+    const auto &c = s.assembly_cost;
+    out << "  \"assembly_cost\": {\"n_assemblies\": " << c.n_assemblies
+        << ", \"n_solves\": " << c.n_solves
+        << ", \"fe_seconds\": " << json_number(c.fe_seconds)
+        << ", \"family_seconds\": " << json_number(c.family_seconds)
+        << ", \"fe_entries\": " << json_number(c.fe_entries)
+        << ", \"family_entries\": " << json_number(c.family_entries)
+        << ", \"fe_flops\": " << json_number(c.fe_flops)
+        << ", \"family_flops\": " << json_number(c.family_flops) << "},\n";
     out << "  \"timing\": {";
     first = true;
     for (const auto &t : s.timing)

@@ -419,12 +419,41 @@ namespace
                                      "set Subdivisions = 1, 2\n"),
                             triangulation);
     });
+    // Cells that the random shifts make non-convex are drawn again: the
+    // plate with a hole (angles up to 134 degrees) takes 'Distortion = 0.3'
+    // at every level, and Cook's membrane 0.45.
+    print_error("distortion 0.3 of the plate with a hole, 5 refinements", []() {
+      Triangulation<2> triangulation;
+      pg::Mesh::create_mesh(geometry("set Mesh = plate with hole\n"
+                                     "set Global refinement = 5\n"
+                                     "set Distortion = 0.3\n"),
+                            triangulation);
+    });
     print_error("distortion 0.45 of the cook membrane, 3 refinements", []() {
       Triangulation<2> triangulation;
       pg::Mesh::create_mesh(geometry("set Mesh = cook membrane\n"
                                      "set Subdivisions = 2\n"
                                      "set Global refinement = 3\n"
                                      "set Distortion = 0.45\n"),
+                            triangulation);
+    });
+    // 2 x 2 cells whose centre vertex (0.2, 0.2) lies inside the triangle
+    // (0,0), (1,0), (0,1): the first cell is an arrow head, and shifts of up
+    // to 0.05 x its shortest edge cannot make it convex.
+    print_error("distortion of a mesh with a non-convex cell", []() {
+      {
+        std::ofstream out("mesh_generator_01_arrow.ucd");
+        out << "9 4 0 0 0\n"
+            << "1 0 0 0\n2 1 0 0\n3 2 0 0\n4 0 1 0\n5 0.2 0.2 0\n"
+            << "6 2 1 0\n7 0 2 0\n8 1 2 0\n9 2 2 0\n"
+            << "1 0 quad 1 2 5 4\n2 0 quad 2 3 6 5\n"
+            << "3 0 quad 4 5 8 7\n4 0 quad 5 6 9 8\n";
+      }
+      Triangulation<2> triangulation;
+      pg::Mesh::create_mesh(geometry("set Mesh = file\n"
+                                     "set File name = "
+                                     "mesh_generator_01_arrow.ucd\n"
+                                     "set Distortion = 0.05\n"),
                             triangulation);
     });
 
