@@ -49,9 +49,14 @@ namespace pg
       }
     else
       {
+        // right preconditioning: the stopping test sees the true residual
+        // (with left preconditioning it sees the AMG-preconditioned one,
+        // and Newton then needs extra steps on linear problems)
         SolverGMRES<LinearAlgebra::Vector> gmres(
           control,
-          SolverGMRES<LinearAlgebra::Vector>::AdditionalData(100));
+          SolverGMRES<LinearAlgebra::Vector>::AdditionalData(
+            100,
+            /*right_preconditioning=*/true));
         gmres.solve(matrix, solution, rhs, amg);
       }
     return control.last_step();
