@@ -274,8 +274,10 @@ namespace pg
     std::vector<std::pair<double, std::string>> pvd_cells, pvd_particles;
     Timer                                       total_timer;
     /** Wall times (s) of the phases, reported in summary.json. */
-    double time_setup = 0, time_shape = 0, time_vc = 0, time_assembly = 0,
-           time_solve = 0;
+    double time_mesh = 0, time_setup = 0, time_shape = 0, time_vc = 0,
+           time_assembly = 0, time_solve = 0;
+    /** Errors, statistics, output (started and stopped around them). */
+    Timer postprocess_timer;
   };
 
 
@@ -323,6 +325,8 @@ namespace pg
   {
     Timer timer;
     Mesh::create_mesh(geometry, triangulation);
+    time_mesh += timer.wall_time();
+    timer.restart();
     const bool fem = (formulation.method == FormulationCode::Method::fem);
     meshfree = fem ? std::vector<bool>(triangulation.n_active_cells(), false) :
                      Mesh::mark_meshfree_cells(geometry, triangulation);
@@ -1268,17 +1272,18 @@ namespace pg
 
             // body force and dead traction on finite element cells
             Vector<double> f(dim);
-            for (const unsigned int q :
-                 scratch.fe_values.quadrature_point_indices())
-              {
-                body_force.vector_value(scratch.fe_values.quadrature_point(q),
-                                        f);
-                for (unsigned int b = 0; b < n; ++b)
-                  for (unsigned int c = 0; c < dim; ++c)
-                    copy.residual(b * dim + c) -=
-                      f(c) * scratch.fe_values.shape_value(b, q) *
-                      scratch.fe_values.JxW(q);
-              }
+            if (!prm.zero_body_force)
+              for (const unsigned int q :
+                   scratch.fe_values.quadrature_point_indices())
+                {
+                  body_force.vector_value(scratch.fe_values.quadrature_point(q),
+                                          f);
+                  for (unsigned int b = 0; b < n; ++b)
+                    for (unsigned int c = 0; c < dim; ++c)
+                      copy.residual(b * dim + c) -=
+                        f(c) * scratch.fe_values.shape_value(b, q) *
+                        scratch.fe_values.JxW(q);
+                }
             add_face_tractions(cell, scratch.fe_face_values, copy.residual);
           }
         catch (const std::exception &e)
@@ -1878,11 +1883,13 @@ namespace pg
                                             const double       t)
   {
     const std::string dir = prm.output.directory + "/";
-    summary.timing        = {{"setup", time_setup},
+    summary.timing        = {{"mesh", time_mesh},
+                             {"setup", time_setup},
                              {"shape_functions", time_shape},
                              {"vc", time_vc},
                              {"assembly", time_assembly},
                              {"solve", time_solve},
+                             {"postprocess", postprocess_timer.wall_time()},
                              {"total", total_timer.wall_time()}};
     if (root)
       {
@@ -2199,6 +2206,7 @@ namespace pg
   Problem<dim>::Implementation::run()
   {
     total_timer.restart();
+    postprocess_timer.reset();
     if (root)
       std::filesystem::create_directories(prm.output.directory);
     MPI_Barrier(comm);
@@ -2216,7 +2224,9 @@ namespace pg
         return;
       }
     summary.load_steps = 0;
+    postprocess_timer.start();
     postprocess(0, 0., 0);
+    postprocess_timer.stop();
 
     const unsigned int n_steps = prm.loading.load_steps;
     double             t       = 0;
@@ -2265,8 +2275,11 @@ namespace pg
         summary.newton_iterations += step_iterations;
         summary.load_steps = step;
         summary.converged  = true;
+        postprocess_timer.start();
         postprocess(step, t, step_iterations);
+        postprocess_timer.stop();
       }
+    postprocess_timer.start();
 
     // The oscillation indicator and a plain table of the particle fields
     // (for plots) at the final state; every rank knows all particles.

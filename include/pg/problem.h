@@ -70,7 +70,12 @@ namespace pg
       double       fe_entries = 0, family_entries = 0;
       double       fe_flops = 0, family_flops = 0;
     } assembly_cost;
-    /** Seconds: setup, shape_functions, assembly, solve, total. */
+    /**
+     * Wall seconds: mesh (generation, refinement, distortion), setup (DoFs,
+     * particles, sparsity), shape_functions (families and their tables),
+     * vc (the correction), assembly, solve, postprocess (errors,
+     * statistics, output files) and total.
+     */
     std::map<std::string, double> timing;
     /** Largest |d^k| at interior particles, divided by spacing^(dim-1). */
     double max_interior_unit_stress_residual = 0;

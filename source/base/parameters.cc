@@ -810,6 +810,17 @@ namespace pg
         prm.leave_subsection();
         prm.enter_subsection("Body force");
         body_force.parse_parameters(prm);
+        {
+          // every component the literal 0: assembly skips the evaluation
+          const std::vector<std::string> components =
+            Utilities::split_string_list(prm.get("Function expression"), ';');
+          zero_body_force =
+            std::all_of(components.begin(),
+                        components.end(),
+                        [](const std::string &c) {
+                          return c == "0" || c == "0.0" || c == "0.";
+                        });
+        }
         prm.leave_subsection();
       }
       prm.leave_subsection();

@@ -225,6 +225,8 @@ namespace pg
       Functions::ParsedFunction<dim> boundary_stress;
       /** Body force per reference volume, rho_0 b (dim components). */
       Functions::ParsedFunction<dim> body_force;
+      /** Every component of 'Body force' is the literal 0. */
+      bool zero_body_force;
       /** Exact displacement for error norms (dim components). */
       Functions::ParsedFunction<dim> exact_solution;
       /**
