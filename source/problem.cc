@@ -976,42 +976,12 @@ namespace pg
     // converges in a few steps on the regular part (eps << |lambda|) and
     // keeps the null-space part at zero: the same factors on any number of
     // MPI ranks. D is the largest entry of each row.
-    {
-      LinearAlgebra::SparseMatrix shifted;
-      shifted.copy_from(matrix);
-      for (const auto row : owned_dofs)
-        {
-          double largest = 0;
-          for (auto entry = matrix.begin(row); entry != matrix.end(row);
-               ++entry)
-            largest = std::max(largest, std::abs(entry->value()));
-          shifted.add(row, row, 1e-9 * largest);
-        }
-      shifted.compress(VectorOperation::add);
-      SolverControl                  control(1, 0, false, false);
-      TrilinosWrappers::SolverDirect solver(
-        control,
-        TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
-      solver.initialize(shifted);
-      LinearAlgebra::Vector residual(owned_dofs, comm),
-        correction(owned_dofs, comm);
-      update                   = 0;
-      const double rhs_norm    = rhs.l2_norm();
-      unsigned int refinements = 0;
-      for (; refinements < 50; ++refinements)
-        {
-          matrix.vmult(residual, update);
-          residual.sadd(-1., 1., rhs);
-          if (residual.l2_norm() <= 1e-14 * rhs_norm)
-            break;
-          solver.solve(correction, residual);
-          update += correction;
-        }
-      AssertThrow(refinements < 50,
-                  ExcMessage("The VC system could not be solved: change "
-                             "the VC boundary option of 'Formulation' in "
-                             "subsection 'Discretization' (p, s or sn)."));
-    }
+    const unsigned int corrections =
+      solve_by_shifted_refinement(matrix, update, rhs, 1e-9, 1e-14, 50);
+    AssertThrow(corrections < 50,
+                ExcMessage("The VC system could not be solved: change "
+                           "the VC boundary option of 'Formulation' in "
+                           "subsection 'Discretization' (p, s or sn)."));
     LinearAlgebra::Vector ghosted(owned_dofs, relevant_dofs, comm);
     ghosted = update;
     std::vector<Tensor<1, dim>> alpha(n);

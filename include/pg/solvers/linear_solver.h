@@ -23,6 +23,33 @@ namespace pg
                       const LinearAlgebra::SparseMatrix &matrix,
                       LinearAlgebra::Vector             &solution,
                       const LinearAlgebra::Vector       &rhs);
+
+  /**
+   * Solve A x = b for a square @p matrix A that may be singular but whose
+   * system is consistent, by iterative refinement with a slightly shifted
+   * factorization (Amesos KLU):
+   *   x <- x + (A + eps D)^{-1} (b - A x),  x_0 = 0,
+   * with D the largest |entry| of each row and eps = @p relative_shift.
+   * It converges in a few steps on the regular part (eps << |lambda|) and
+   * keeps the null-space part of x at zero.
+   *
+   * Only the nonzero entries of A (and the diagonal) are factorized: A may
+   * be stored in a larger sparsity pattern, e.g. the tangent's, whose other
+   * entries are zero, and a direct solver would treat every stored entry as
+   * a structural nonzero (fill-in, time). The factorized matrix holds the
+   * same values, so only the pivot order can differ.
+   *
+   * Stops as soon as |b - A x| <= @p tolerance |b| and returns the number
+   * of corrections applied; returns @p max_corrections if the tolerance
+   * was not reached (the caller decides what that means).
+   */
+  unsigned int
+  solve_by_shifted_refinement(const LinearAlgebra::SparseMatrix &matrix,
+                              LinearAlgebra::Vector             &solution,
+                              const LinearAlgebra::Vector       &rhs,
+                              const double                       relative_shift,
+                              const double                       tolerance,
+                              const unsigned int max_corrections);
 } // namespace pg
 
 #endif
