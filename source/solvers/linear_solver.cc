@@ -9,6 +9,8 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <Amesos.h>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -25,9 +27,15 @@ namespace pg
   {
     if (parameters.type == "direct")
       {
-        SolverControl control(1, 0, false, false);
+        // MUMPS (multifrontal, dense BLAS kernels) factorizes the wide PG
+        // stencils several times faster than KLU (doc/benchmarks/
+        // profiling.md); KLU where Trilinos was built without MUMPS.
+        static const bool have_mumps = Amesos().Query("Amesos_Mumps");
+        SolverControl     control(1, 0, false, false);
         TrilinosWrappers::SolverDirect::AdditionalData data(false,
-                                                            "Amesos_Klu");
+                                                            have_mumps ?
+                                                              "Amesos_Mumps" :
+                                                              "Amesos_Klu");
         TrilinosWrappers::SolverDirect                 solver(control, data);
         solver.solve(matrix, solution, rhs);
         return 0;

@@ -11,9 +11,10 @@ namespace pg
 {
   /**
    * Solve K du = b with the solver of subsection 'Linear solver': Amesos
-   * KLU (direct), or CG / GMRES preconditioned by ML algebraic multigrid
-   * whose near-null space is the rigid translations. Returns the number of
-   * Krylov iterations (0 for the direct solver). Throws
+   * MUMPS (direct; KLU if Trilinos was built without MUMPS), or CG / GMRES
+   * preconditioned by ML algebraic multigrid whose near-null space is the
+   * rigid translations. Returns the number of Krylov iterations (0 for the
+   * direct solver). Throws
    * SolverControl::NoConvergence if the Krylov method does not converge.
    */
   template <int dim>
