@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace pg
@@ -79,7 +80,8 @@ namespace pg
                               const LinearAlgebra::Vector       &rhs,
                               const double                       relative_shift,
                               const double                       tolerance,
-                              const unsigned int max_corrections)
+                              const unsigned int max_corrections,
+                              const double       floor_tolerance)
   {
     using size_type = types::global_dof_index;
     // The owned rows of A + eps D without the stored zeros of A, read
@@ -152,13 +154,19 @@ namespace pg
     LinearAlgebra::Vector residual(rhs), correction(rhs);
     solution                 = 0;
     const double rhs_norm    = rhs.l2_norm();
+    double       previous    = std::numeric_limits<double>::infinity();
     unsigned int corrections = 0;
     for (; corrections < max_corrections; ++corrections)
       {
         matrix.vmult(residual, solution);
         residual.sadd(-1., 1., rhs);
-        if (residual.l2_norm() <= tolerance * rhs_norm)
+        const double norm = residual.l2_norm();
+        if (norm <= tolerance * rhs_norm)
           break;
+        // the round-off floor of b - A x: small, and no longer halved
+        if (norm <= floor_tolerance * rhs_norm && norm > 0.5 * previous)
+          break;
+        previous = norm;
         solver.solve(correction, residual);
         solution += correction;
       }
