@@ -986,54 +986,12 @@ namespace pg
     // converges in a few steps on the regular part (eps << |lambda|) and
     // keeps the null-space part at zero: the same factors on any number of
     // MPI ranks. D is the largest entry of each row.
-    {
-      LinearAlgebra::SparseMatrix shifted;
-      shifted.copy_from(matrix);
-      for (const auto row : owned_dofs)
-        {
-          double largest = 0;
-          for (auto entry = matrix.begin(row); entry != matrix.end(row);
-               ++entry)
-            largest = std::max(largest, std::abs(entry->value()));
-          shifted.add(row, row, 1e-9 * largest);
-        }
-      shifted.compress(VectorOperation::add);
-      SolverControl                  control(1, 0, false, false);
-      TrilinosWrappers::SolverDirect solver(
-        control,
-        TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
-      solver.initialize(shifted);
-      LinearAlgebra::Vector residual(owned_dofs, comm),
-        correction(owned_dofs, comm);
-      update                = 0;
-      const double rhs_norm = rhs.l2_norm();
-      // Refine until the residual reaches round-off: below 1e-14 |b|, or
-      // no longer halving (the floor of the factorization grows with the
-      // system); it must then be below 1e-10 |b|.
-      double residual_norm = std::numeric_limits<double>::max();
-      for (unsigned int refinement = 0; refinement < 50; ++refinement)
-        {
-          matrix.vmult(residual, update);
-          residual.sadd(-1., 1., rhs);
-          const double previous = residual_norm;
-          residual_norm         = residual.l2_norm();
-          if (residual_norm <= 1e-14 * rhs_norm ||
-              residual_norm > 0.5 * previous)
-            break;
-          solver.solve(correction, residual);
-          update += correction;
-        }
-      std::ostringstream relative;
-      relative << std::scientific << std::setprecision(1)
-               << residual_norm / rhs_norm;
-      AssertThrow(residual_norm <= 1e-10 * rhs_norm,
-                  ExcMessage("The VC system could not be solved (relative "
-                             "residual " +
-                             relative.str() +
-                             "): change the VC boundary option of "
-                             "'Formulation' in subsection 'Discretization' "
-                             "(p, s or sn)."));
-    }
+    const unsigned int corrections =
+      solve_by_shifted_refinement(matrix, update, rhs, 1e-9, 1e-14, 50);
+    AssertThrow(corrections < 50,
+                ExcMessage("The VC system could not be solved: change "
+                           "the VC boundary option of 'Formulation' in "
+                           "subsection 'Discretization' (p, s or sn)."));
     LinearAlgebra::Vector ghosted(owned_dofs, relevant_dofs, comm);
     ghosted = update;
     std::vector<Tensor<1, dim>> alpha(n);
