@@ -116,8 +116,10 @@ namespace pg
                           "0",
                           Patterns::Double(0., 0.45),
                           "Every interior vertex is moved randomly by up to "
-                          "this fraction of its local vertex spacing (after "
-                          "refinement). 0 keeps the mesh regular.");
+                          "this fraction of its shortest adjacent edge "
+                          "(after refinement); vertices of cells that the "
+                          "shifts make non-convex are drawn again. 0 keeps "
+                          "the mesh regular.");
         prm.declare_entry("Random seed",
                           "0",
                           Patterns::Integer(0),
