@@ -540,7 +540,8 @@ namespace pg
         prm.declare_entry("Type",
                           "direct",
                           Patterns::Selection("direct|cg|gmres"),
-                          "direct: Trilinos Amesos KLU. cg (symmetric "
+                          "direct: Trilinos Amesos with MUMPS (KLU if "
+                          "Trilinos lacks MUMPS). cg (symmetric "
                           "tangents only: FEM and PBG with hyperelastic "
                           "materials) or gmres, both preconditioned by "
                           "Trilinos ML algebraic multigrid.");
