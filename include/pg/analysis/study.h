@@ -22,8 +22,8 @@ namespace pg
      * x distortions x horizon factors x refinement levels). Every run writes
      * its usual files into its own directory; the study collects their
      * summaries into one table (study.txt), convergence rates (rates.txt,
-     * also printed), one data file per series (series/*.dat) and a gnuplot
-     * script (study.gp) that draws error against wall time and against
+     * also printed), one data file per series (series/<series>.dat) and a
+     * gnuplot script (study.gp) that draws error against wall time and against
      * DoFs.
      */
     namespace Study
