@@ -293,14 +293,14 @@ namespace pg
 
         template <int dim>
         void
-        write_results(const std::vector<Run>           &runs,
-                      const Study::Parameters          &study,
-                      const std::vector<double>        &horizons,
-                      const std::vector<Configuration> &configurations,
-                      std::ostream                     &out)
+        write_results(const std::vector<Run>    &runs,
+                      const Study::Parameters   &study,
+                      const std::vector<double> &horizons,
+                      std::ostream              &out)
         {
-          const std::string dir         = study.directory + "/";
-          const bool        with_stress = !study.stress_point.empty();
+          const auto       &configurations = study.configurations;
+          const std::string dir            = study.directory + "/";
+          const bool        with_stress    = !study.stress_point.empty();
           const std::string stress_name =
             "sigma_" +
             std::string{"xyz"[study.stress_row], "xyz"[study.stress_column]} +
@@ -423,13 +423,10 @@ namespace pg
               out << block.str();
               rates << block.str();
             }
-          for (const char *column : {"L2", "H1", "energy", "stress error"})
-            if (std::string(column) != "stress error" || with_stress)
-              {
-                table.set_scientific(column, true);
-                table.set_precision(column, 2);
-              }
-          for (const char *column : {"mesh s",
+          for (const char *column : {"L2",
+                                     "H1",
+                                     "energy",
+                                     "mesh s",
                                      "setup s",
                                      "shape_functions s",
                                      "postprocess s",
@@ -442,6 +439,11 @@ namespace pg
             {
               table.set_scientific(column, true);
               table.set_precision(column, 2);
+            }
+          if (with_stress)
+            {
+              table.set_scientific("stress error", true);
+              table.set_precision("stress error", 2);
             }
           for (const char *column : {"nnz/row",
                                      "FE Mentries/s",
@@ -751,11 +753,7 @@ namespace pg
                 }
 
           if (root)
-            write_results<dim>(runs,
-                               study,
-                               horizons,
-                               study.configurations,
-                               out);
+            write_results<dim>(runs, study, horizons, out);
           const unsigned int n_failed =
             std::count_if(runs.begin(), runs.end(), [](const Run &r) {
               return !r.ok && !r.skipped;
