@@ -1,0 +1,61 @@
+#include <pg/base/application.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <iostream>
+
+namespace pg
+{
+  int
+  run_application(
+    int                                                               argc,
+    char                                                            **argv,
+    const std::string                                                &usage,
+    const std::function<void(ParameterHandler &)>                    &declare,
+    const std::function<int(const std::vector<std::string> &, bool)> &run)
+  {
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    const bool root  = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    const auto abort = []() {
+      if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+        MPI_Abort(MPI_COMM_WORLD, 1);
+      return 1;
+    };
+    try
+      {
+        const std::vector<std::string> args(argv + 1, argv + argc);
+        if (args.empty() || args[0] == "--help" || args[0] == "-h")
+          {
+            if (root)
+              std::cout << usage;
+            return args.empty() ? 1 : 0;
+          }
+        if (args[0] == "--print-parameters")
+          {
+            ParameterHandler prm;
+            declare(prm);
+            if (root)
+              prm.print_parameters(std::cout, ParameterHandler::PRM);
+            return 0;
+          }
+        return run(args, root);
+      }
+    catch (std::exception &exc)
+      {
+        std::cerr << std::endl
+                  << "----------------------------------------------------"
+                  << std::endl
+                  << "Exception on processing: " << std::endl
+                  << exc.what() << std::endl
+                  << "Aborting!" << std::endl
+                  << "----------------------------------------------------"
+                  << std::endl;
+        return abort();
+      }
+    catch (...)
+      {
+        std::cerr << std::endl << "Unknown exception! Aborting!" << std::endl;
+        return abort();
+      }
+  }
+} // namespace pg
