@@ -5,12 +5,14 @@
 // 'output' that deal.II's test driver compares with numdiff, a fixed thread
 // count, and printing helpers that print only reproducible digits.
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/multithread_info.h>
 
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 #include <string>
 
 using namespace dealii;
@@ -37,6 +39,21 @@ print_bound(const std::string &name, const double value, const double bound)
     deallog << name << " <= " << bound << ": yes" << std::endl;
   else
     deallog << name << " <= " << bound << ": NO (" << value << ")" << std::endl;
+}
+
+/**
+ * The message of a deal.II exception (its print_info() text) without the
+ * trailing blanks and line breaks.
+ */
+inline std::string
+exception_message(const ExceptionBase &e)
+{
+  std::ostringstream message;
+  e.print_info(message);
+  std::string text = message.str();
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    text.pop_back();
+  return text;
 }
 
 /** @p value with @p digits significant digits. */

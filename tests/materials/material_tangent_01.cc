@@ -292,11 +292,8 @@ print_exception(const std::string &name, const Function &f)
     }
   catch (const ExceptionBase &e)
     {
-      std::ostringstream message;
-      e.print_info(message);
-      std::string text = message.str();
+      std::string text = exception_message(e);
       text.erase(0, text.find_first_not_of(" \n"));
-      text.erase(text.find_last_not_of(" \n") + 1);
       deallog << name << ": " << text << std::endl;
     }
 }

@@ -83,9 +83,8 @@ namespace
       }
     catch (const ExceptionBase &exc)
       {
-        std::ostringstream s;
-        exc.print_info(s);
-        deallog << name << ": " << Utilities::trim(s.str()) << std::endl;
+        deallog << name << ": " << Utilities::trim(exception_message(exc))
+                << std::endl;
       }
   }
 

@@ -47,12 +47,7 @@ check_error(const std::string &title, const std::string &changes)
     }
   catch (ExceptionBase &e)
     {
-      std::ostringstream message;
-      e.print_info(message);
-      std::string text = message.str();
-      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-        text.pop_back();
-      deallog << text << std::endl;
+      deallog << exception_message(e) << std::endl;
     }
 }
 
