@@ -3,6 +3,7 @@
 #include <pg/base/exceptions.h>
 #include <pg/base/formulation_code.h>
 #include <pg/base/linear_algebra.h>
+#include <pg/elements/cpd_interactions.h>
 #include <pg/elements/family_elements.h>
 #include <pg/elements/kernel_cost.h>
 #include <pg/elements/q1_cell.h>
@@ -215,6 +216,12 @@ namespace pg
     ParticleSet<dim>                                            particles;
     FamilySet<dim>                                              families;
     std::unique_ptr<FamilyElements<dim>>                        family_elements;
+    /**
+     * Formulation = CPD: the interactions, assembled in place of the
+     * family tables (family_elements then serves the particle deformation
+     * gradients of the output only, as PBG U1).
+     */
+    std::unique_ptr<CpdInteractions<dim>> cpd;
     std::vector<unsigned int>                                   owned_families;
     std::vector<QuadratureTable<dim>>                           family_tables;
     std::vector<typename DoFHandler<dim>::active_cell_iterator> owned_fe_cells;
@@ -364,14 +371,26 @@ namespace pg
     timer.restart();
     if (particles.n_particles() > 0)
       {
+        const bool is_cpd = (formulation.method == FormulationCode::Method::cpd);
+        // CPD with partial volumes: bonds reach delta + h/2
         families.reinit(particles,
-                        prm.discretization.horizon_factor,
+                        prm.discretization.horizon_factor +
+                          (is_cpd && prm.cpd.partial_volumes ? 0.5 : 0.),
                         prm.discretization.nearest_neighbours);
         summary.n_families = families.n_families();
-        family_elements    = std::make_unique<FamilyElements<dim>>(
+        if (is_cpd)
+          cpd = std::make_unique<CpdInteractions<dim>>(
+            particles,
+            families,
+            CpdConstants{prm.cpd.C1,
+                         prm.cpd.C2,
+                         prm.cpd.C3,
+                         prm.cpd.partial_volumes},
+            prm.discretization.horizon_factor);
+        family_elements = std::make_unique<FamilyElements<dim>>(
           particles,
           families,
-          formulation,
+          is_cpd ? parse_formulation_code("PBG U1") : formulation,
           ShapeFunctions::parse_base(prm.discretization.shape_functions),
           prm.discretization.weight_exponent);
         family_elements->initialize();
@@ -431,7 +450,17 @@ namespace pg
         for (unsigned int a = 0; a < members.size(); ++a)
           for (unsigned int c = 0; c < dim; ++c)
             dofs[a * dim + c] = particles.dof(members[a], c);
-        zero_constraints.add_entries_local_to_global(dofs, dsp, true);
+        if (cpd)
+          {
+            // one horizon: particle k couples to its neighbours only (the
+            // zero blocks of the family's local matrix are not added)
+            const std::vector<types::global_dof_index> row(dofs.begin(),
+                                                           dofs.begin() + dim);
+            zero_constraints.add_entries_local_to_global(row, dofs, dsp, true);
+            zero_constraints.add_entries_local_to_global(dofs, row, dsp, true);
+          }
+        else
+          zero_constraints.add_entries_local_to_global(dofs, dsp, true);
       }
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                owned_dofs,
@@ -473,7 +502,7 @@ namespace pg
       }
     pcout << "pg_solve: " << dim << "-D, formulation '" << formulation.text
           << "'";
-    if (formulation.method != FormulationCode::Method::fem)
+    if (formulation.method != FormulationCode::Method::fem && !cpd)
       pcout << " (" << formulation.method_name() << ", "
             << (formulation.points == FormulationCode::Points::unl ? "Unl" :
                 formulation.points == FormulationCode::Points::u1  ? "U1" :
@@ -484,9 +513,20 @@ namespace pg
                   prm.discretization.shape_functions)
             << ", bond correction "
             << (formulation.bond_correction ? "on" : "off") << ")";
-    pcout << "\n  material:        " << prm.material.model
-          << ", E = " << prm.material.youngs_modulus
-          << ", nu = " << prm.material.poissons_ratio << "\n"
+    if (cpd)
+      {
+        const auto n = cpd->n_interactions();
+        pcout << "\n  CPD:             C1 = " << prm.cpd.C1
+              << ", C2 = " << prm.cpd.C2 << ", C3 = " << prm.cpd.C3
+              << (prm.cpd.partial_volumes ? ", partial volumes" : "")
+              << "\n  interactions:    " << n[0] << " bonds, " << n[1]
+              << " triangles, " << n[2] << " tetrahedra";
+      }
+    if (!cpd || summary.n_fe_cells > 0)
+      pcout << "\n  material:        " << prm.material.model
+            << ", E = " << prm.material.youngs_modulus
+            << ", nu = " << prm.material.poissons_ratio;
+    pcout << "\n"
           << "  cells:           " << triangulation.n_active_cells() << " ("
           << summary.n_fe_cells << " finite elements, "
           << summary.n_meshfree_cells << " meshfree)\n"
@@ -607,6 +647,47 @@ namespace pg
                                             cell->face(f)->vertex(v),
                                             comp));
                   }
+
+    for (const auto &[coordinates, mask] : prm.boundary_conditions.fixed_points)
+      {
+        Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = coordinates[d];
+        const unsigned int vertex = GridTools::find_closest_vertex(dof_handler, p);
+        const double tolerance =
+          1e-8 * GridTools::diameter(triangulation);
+        AssertThrow(triangulation.get_vertices()[vertex].distance(p) <=
+                      tolerance,
+                    ExcBadParameter("Boundary conditions/Fixed points",
+                                    std::to_string(p[0]) + ", " +
+                                      std::to_string(p[1]) +
+                                      (dim == 3 ? ", " + std::to_string(p[2]) :
+                                                  std::string()),
+                                    "no mesh vertex lies at this point; the "
+                                    "nearest one is at distance " +
+                                      std::to_string(
+                                        triangulation.get_vertices()[vertex]
+                                          .distance(p)) +
+                                      "."));
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            if (cell->vertex_index(v) == vertex)
+              {
+                for (unsigned int comp = 0; comp < dim; ++comp)
+                  if (mask[comp])
+                    {
+                      const types::global_dof_index dof =
+                        cell->vertex_dof_index(v, comp);
+                      if (c.is_constrained(dof))
+                        continue;
+                      c.add_line(dof);
+                      if (!homogeneous)
+                        c.set_inhomogeneity(
+                          dof, prm.prescribed_displacement.value(p, comp));
+                    }
+                break;
+              }
+      }
 
     for (const types::boundary_id id : prm.boundary_conditions.symmetry)
       {
@@ -1286,11 +1367,17 @@ namespace pg
                                     u_full[copy.dofs[b * dim + c]];
                 }
             copy.with_matrix = with_matrix;
-            assemble_element(family_tables[*it],
-                             scratch.y,
-                             *material,
-                             copy.residual,
-                             with_matrix ? &copy.matrix : nullptr);
+            if (cpd)
+              cpd->assemble(k,
+                            scratch.y,
+                            copy.residual,
+                            with_matrix ? &copy.matrix : nullptr);
+            else
+              assemble_element(family_tables[*it],
+                               scratch.y,
+                               *material,
+                               copy.residual,
+                               with_matrix ? &copy.matrix : nullptr);
           }
         catch (const std::exception &e)
           {
@@ -1666,11 +1753,21 @@ namespace pg
           owned_fe_cells.size() * tangent_entries(scratch.table);
         cost.fe_flops = owned_fe_cells.size() * tangent_flops(scratch.table);
       }
-    for (const auto &table : family_tables)
-      {
-        cost.family_entries += tangent_entries(table);
-        cost.family_flops += tangent_flops(table);
-      }
+    if (cpd)
+      for (const unsigned int k : owned_families)
+        {
+          // an interaction of order n has (n + 1) dim rows and columns
+          const auto n = cpd->n_interactions(k);
+          for (unsigned int order = 0; order < 3; ++order)
+            cost.family_entries +=
+              n[order] * Utilities::fixed_power<2>((order + 2.) * dim);
+        }
+    else
+      for (const auto &table : family_tables)
+        {
+          cost.family_entries += tangent_entries(table);
+          cost.family_flops += tangent_flops(table);
+        }
     for (double *x : {&cost.fe_entries,
                       &cost.fe_flops,
                       &cost.family_entries,

@@ -52,6 +52,8 @@ namespace pg
           return "PPG";
         case Method::ppg2:
           return "PPG2";
+        case Method::cpd:
+          return "CPD";
       }
     Assert(false, ExcInternalError());
     return "";
@@ -111,6 +113,18 @@ namespace pg
       result.method = FormulationCode::Method::ppg2; // "based on PPG2" (7.1)
     else if (head == "PPG2")
       result.method = FormulationCode::Method::ppg2;
+    else if (head == "CPD")
+      {
+        result.method = FormulationCode::Method::cpd;
+        if (result.bond_correction || result.variational_consistency)
+          reject(code,
+                 "CPD takes no corrections (it has no shape functions).");
+        if (words.size() > 1)
+          reject(code,
+                 "CPD takes no further parts; its constants are in "
+                 "subsection 'CPD'.");
+        return result;
+      }
     else if (head == "FEM")
       {
         result.method = FormulationCode::Method::fem;

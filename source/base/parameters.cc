@@ -92,6 +92,16 @@ namespace pg
                           "Cells per direction before global refinement "
                           "(hyper rectangle and cook membrane); one value is "
                           "used for every direction.");
+        prm.declare_entry(
+          "Hole",
+          "",
+          Patterns::Anything(),
+          "Hyper rectangle only: 'box x0,y0 : x1,y1' (dim coordinates per "
+          "corner) removes the cells of the coarse mesh ('Subdivisions') "
+          "whose centres lie in the box, before refinement; the faces of the "
+          "hole get boundary id 2*dim (4 in 2-D, 6 in 3-D). Empty: no hole. "
+          "E.g. the unit square or cube with a centred square hole of side "
+          "0.4: 'box 0.3,0.3 : 0.7,0.7' with 10 subdivisions.");
         prm.declare_entry("Plate size",
                           "4",
                           Patterns::Double(0.),
@@ -161,6 +171,7 @@ namespace pg
         distortion        = prm.get_double("Distortion");
         random_seed       = prm.get_integer("Random seed");
         meshfree_region   = prm.get("Meshfree region");
+        hole              = prm.get("Hole");
       }
       prm.leave_subsection();
 
@@ -202,7 +213,10 @@ namespace pg
           "so 'VC2PPG' means PPG2, and it takes the boundary option s "
           "(default correction function V1). FEM uses Q1 elements everywhere. "
           "Examples: 'BCPBG Unl TL', 'VCBCPBG V5sn Unl', 'VCBCPPG V3sn Unl', "
-          "'PBG U1', 'VC2PPG V1s U2'.");
+          "'PBG U1', 'VC2PPG V1s U2'. CPD: continuum-kinematics-inspired "
+          "peridynamics with the constants of subsection 'CPD' (the "
+          "meshfree cells' vertices interact within the horizon; no shape "
+          "functions).");
         prm.declare_entry("Shape functions",
                           "MTE1",
                           Patterns::Selection("MTE1|MLS1|WLS1|WTE1"),
@@ -244,6 +258,67 @@ namespace pg
         horizon_factor     = prm.get_double("Horizon factor");
         nearest_neighbours = prm.get_integer("Nearest neighbours");
         weight_exponent    = prm.get_double("Weight exponent");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Cpd::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("CPD");
+      {
+        prm.declare_entry(
+          "C1",
+          "1",
+          Patterns::Double(),
+          "One-neighbour (bond) constant C_1 of continuum-kinematics-inspired "
+          "peridynamics (Formulation = CPD; Javili et al. 2020, eq. 23): "
+          "psi_1 = C_1 (l - L)^2 / (2 L). Units N m / m^7 in 3-D, N m / m^5 "
+          "in 2-D. Must be positive. Alone (C2 = C3 = 0) it is Silling's "
+          "bond-based micro-elastic material with nu = 1/4 (3-D) or 1/3 "
+          "(2-D); doc/cpd.md relates C_1 to E.");
+        prm.declare_entry(
+          "C2",
+          "0",
+          Patterns::Double(),
+          "Two-neighbour (area) constant C_2 (eq. 24): psi_2 = C_2 (a - A)^2 "
+          "/ (2 A) for the triangles of a particle and two of its mutual "
+          "neighbours. Units N m / m^11 (3-D), N m / m^8 (2-D). Raises the "
+          "Poisson ratio (negative values lower it).");
+        prm.declare_entry(
+          "C3",
+          "0",
+          Patterns::Double(),
+          "Three-neighbour (volume) constant C_3 (eq. 25, 3-D only): psi_3 = "
+          "C_3 (v - V)^2 / (2 V) for the tetrahedra of a particle and three "
+          "mutual neighbours. Units N m / m^15.");
+        prm.declare_entry(
+          "Partial volumes",
+          "false",
+          Patterns::Bool(),
+          "Weigh each bond by the share beta of the neighbour's volume inside "
+          "the horizon, beta = (delta + h/2 - |xi|)/h clipped to [0, 1] with "
+          "h the particle spacing (families then reach delta + h/2). Off: "
+          "every neighbour within delta counts fully, as in the source; on a "
+          "regular lattice the discrete Poisson ratio then oscillates with "
+          "delta/h (doc/cpd.md).");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Cpd::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("CPD");
+      {
+        C1              = prm.get_double("C1");
+        C2              = prm.get_double("C2");
+        C3              = prm.get_double("C3");
+        partial_volumes = prm.get_bool("Partial volumes");
       }
       prm.leave_subsection();
     }
@@ -351,6 +426,15 @@ namespace pg
           "Comma-separated 'boundary id: components' items, e.g. '0: xy, 3: "
           "y'. The listed displacement components on that boundary take the "
           "values of subsection 'Prescribed displacement'.");
+        prm.declare_entry(
+          "Fixed points",
+          "",
+          Patterns::Anything(),
+          "Semicolon-separated 'coordinates: components' items, e.g. '0, 0.5: "
+          "y; 0, 1: x'. The listed displacement components of the mesh "
+          "vertex at each point take the values of subsection 'Prescribed "
+          "displacement' (a vertex must lie there). For removing the rigid "
+          "motions of a laterally free specimen.");
         prm.declare_entry("Symmetry",
                           "",
                           Patterns::Anything(),
@@ -438,6 +522,45 @@ namespace pg
                 mask[component] = true;
               }
             dirichlet.emplace_back(id, mask);
+          }
+        fixed_points.clear();
+        const std::string points = prm.get("Fixed points");
+        for (const std::string &item :
+             Utilities::split_string_list(points, ';'))
+          {
+            const std::vector<std::string> parts =
+              Utilities::split_string_list(item, ':');
+            AssertThrow(parts.size() == 2,
+                        ExcBadParameter("Boundary conditions/Fixed points",
+                                        points,
+                                        "each item must read 'coordinates: "
+                                        "components', e.g. '0, 0.5: y'."));
+            const std::vector<double> X =
+              parse_doubles(parts[0], "Boundary conditions/Fixed points");
+            AssertThrow(X.size() == dim,
+                        ExcBadParameter("Boundary conditions/Fixed points",
+                                        points,
+                                        "each point needs " +
+                                          std::to_string(dim) +
+                                          " coordinates."));
+            std::vector<bool> mask(dim, false);
+            for (const char c : parts[1])
+              {
+                const unsigned int component = (c == 'x' ? 0 :
+                                                c == 'y' ? 1 :
+                                                c == 'z' ? 2 :
+                                                           99);
+                AssertThrow(component < dim,
+                            ExcBadParameter("Boundary conditions/Fixed points",
+                                            points,
+                                            "components are written with the "
+                                            "letters x, y" +
+                                              std::string(dim == 3 ? ", z" :
+                                                                     "") +
+                                              "."));
+                mask[component] = true;
+              }
+            fixed_points.emplace_back(X, mask);
           }
         symmetry =
           parse_ids(prm.get("Symmetry"), "Boundary conditions/Symmetry");
@@ -744,6 +867,7 @@ namespace pg
                         "else.");
       Geometry::declare_parameters(prm);
       Discretization::declare_parameters(prm);
+      Cpd::declare_parameters(prm);
       Material::declare_parameters(prm);
       BoundaryConditions::declare_parameters(prm);
       prm.enter_subsection("Boundary conditions");
@@ -798,6 +922,7 @@ namespace pg
       AssertThrow(dimension == dim, ExcInternalError());
       geometry.parse_parameters(prm);
       discretization.parse_parameters(prm);
+      cpd.parse_parameters(prm);
       material.parse_parameters(prm);
       boundary_conditions.parse_parameters(prm, dim);
       prm.enter_subsection("Boundary conditions");

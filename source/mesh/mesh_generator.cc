@@ -20,6 +20,7 @@
 #include <fstream>
 #include <limits>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -506,19 +507,23 @@ namespace pg
                                  material_ids.end(),
                                  cell->material_id()) != material_ids.end();
               case Kind::box:
-                {
-                  const Point<dim> c         = cell->center();
-                  const double     tolerance = 1e-10 * lower.distance(upper);
-                  for (unsigned int d = 0; d < dim; ++d)
-                    if (c[d] < lower[d] - tolerance ||
-                        c[d] > upper[d] + tolerance)
-                      return false;
-                  return true;
-                }
               case Kind::ball:
-                return cell->center().distance(centre) <= radius * (1. + 1e-10);
+                return contains_point(cell->center());
             }
           return false;
+        }
+
+        /** Whether @p p lies in the box or ball (closed, as above). */
+        bool
+        contains_point(const Point<dim> &p) const
+        {
+          if (kind == Kind::ball)
+            return p.distance(centre) <= radius * (1. + 1e-10);
+          const double tolerance = 1e-10 * lower.distance(upper);
+          for (unsigned int d = 0; d < dim; ++d)
+            if (p[d] < lower[d] - tolerance || p[d] > upper[d] + tolerance)
+              return false;
+          return true;
         }
       };
 
@@ -540,10 +545,11 @@ namespace pg
 
       template <int dim>
       MeshfreeRegion<dim>
-      parse_meshfree_region(const std::string &text)
+      parse_meshfree_region(const std::string &text,
+                            const std::string &entry = "Geometry/Meshfree region")
       {
         const ExcBadParameter bad_region(
-          "Geometry/Meshfree region",
+          entry,
           text,
           "it must read 'all', 'none', 'material ids 1,2', 'box x0,y0 : "
           "x1,y1' or 'ball cx,cy : r' with " +
@@ -613,6 +619,44 @@ namespace pg
 
         return region;
       }
+      /**
+       * 'Hole': remove the coarse cells whose centres lie in the box; the
+       * faces of the hole get boundary id 2*dim.
+       */
+      template <int dim>
+      void
+      cut_hole(const Parameters::Geometry &parameters,
+               Triangulation<dim>         &triangulation)
+      {
+        const MeshfreeRegion<dim> hole =
+          parse_meshfree_region<dim>(parameters.hole, "Geometry/Hole");
+        AssertThrow(hole.kind == MeshfreeRegion<dim>::Kind::box,
+                    ExcBadParameter("Geometry/Hole",
+                                    parameters.hole,
+                                    "it must read 'box x0,y0 : x1,y1' (or be "
+                                    "empty)."));
+        Triangulation<dim> full;
+        full.copy_triangulation(triangulation);
+        std::set<typename Triangulation<dim>::active_cell_iterator> removed;
+        for (const auto &cell : full.active_cell_iterators())
+          if (hole.contains(cell))
+            removed.insert(cell);
+        AssertThrow(!removed.empty() && removed.size() < full.n_active_cells(),
+                    ExcBadParameter("Geometry/Hole",
+                                    parameters.hole,
+                                    "it must contain the centres of some, but "
+                                    "not all, cells of the coarse mesh "
+                                    "('Subdivisions')."));
+        triangulation.clear();
+        GridGenerator::create_triangulation_with_removed_cells(full,
+                                                               removed,
+                                                               triangulation);
+        // the new boundary: faces on the (closed) box
+        for (const auto &cell : triangulation.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && hole.contains_point(face->center()))
+              face->set_boundary_id(2 * dim);
+      }
     } // namespace
 
 
@@ -627,7 +671,11 @@ namespace pg
 
       const std::string &mesh = parameters.mesh;
       if (mesh == "hyper rectangle")
-        create_hyper_rectangle(parameters, triangulation);
+        {
+          create_hyper_rectangle(parameters, triangulation);
+          if (!parameters.hole.empty())
+            cut_hole(parameters, triangulation);
+        }
       else if (mesh == "cook membrane" || mesh == "plate with hole")
         {
           AssertThrow(dim == 2,

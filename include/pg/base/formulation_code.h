@@ -22,7 +22,8 @@ namespace pg
       fem,  //!< Q1 finite elements everywhere
       pbg,  //!< Bubnov-Galerkin, eq. (4.30)
       ppg1, //!< Petrov-Galerkin, eq. (4.21) ("PPG")
-      ppg2  //!< Petrov-Galerkin, eq. (4.22)
+      ppg2, //!< Petrov-Galerkin, eq. (4.22)
+      cpd   //!< continuum-kinematics-inspired peridynamics (Javili et al.)
     };
 
     /** Which evaluation points a family has. */
@@ -65,7 +66,7 @@ namespace pg
     /** The code as the user wrote it, normalised to single spaces. */
     std::string text;
 
-    /** "PBG", "PPG", "PPG2" or "FEM". */
+    /** "PBG", "PPG", "PPG2", "CPD" or "FEM". */
     std::string
     method_name() const;
   };

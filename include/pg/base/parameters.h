@@ -42,6 +42,8 @@ namespace pg
       unsigned int random_seed;
       /** all | none | material ids a,b | box x0,y0 : x1,y1 | ball cx,cy : r */
       std::string meshfree_region;
+      /** Hyper rectangle: 'box x0,y0 : x1,y1' of removed cells, or empty. */
+      std::string hole;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -62,6 +64,21 @@ namespace pg
       unsigned int nearest_neighbours;
       /** omega = |dX|^(-2n). */
       double weight_exponent;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /**
+     * Subsection "CPD": the constants of continuum-kinematics-inspired
+     * peridynamics (Formulation = CPD).
+     */
+    struct Cpd
+    {
+      double C1, C2, C3;
+      bool   partial_volumes;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -111,6 +128,13 @@ namespace pg
        * 'automatic': 'test functions' with VC, 'geometry' without.
        */
       std::string particle_traction_area;
+      /**
+       * 'Fixed points': mesh vertices (dim coordinates) whose listed
+       * components take the values of 'Prescribed displacement', e.g. to
+       * remove the rigid motions of a laterally free specimen.
+       */
+      std::vector<std::pair<std::vector<double>, std::vector<bool>>>
+        fixed_points;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -206,6 +230,7 @@ namespace pg
       unsigned int       dimension;
       Geometry           geometry;
       Discretization     discretization;
+      Cpd                cpd;
       Material           material;
       BoundaryConditions boundary_conditions;
       Loading            loading;
