@@ -1504,6 +1504,8 @@ namespace pg
           {
             pcout << "    Newton " << it << ": |R|/|R_0| =" << line.str()
                   << std::endl;
+            summary.newton_residuals.push_back(
+              summary.newton_residuals_last_step);
             return true;
           }
         if (it == prm.newton.maximum_iterations)

@@ -33,6 +33,8 @@ namespace pg
     unsigned int            newton_iterations = 0;
     /** |R| of every Newton iteration of the last (sub)step. */
     std::vector<double> newton_residuals_last_step;
+    /** |R| of every Newton iteration of every converged (sub)step. */
+    std::vector<std::vector<double>> newton_residuals;
     /** name -> displacement at the final converged step. */
     std::vector<std::pair<std::string, std::vector<double>>> points;
     /** Dirichlet boundary id -> reaction force (f_int - f_ext). */

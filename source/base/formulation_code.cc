@@ -14,7 +14,7 @@ namespace pg
       "and its boundary option <b> = p, s or sn (default sn; VC2 takes s), "
       "and <points> = Unl, U1 (PBG only) or U2, e.g. 'BCPBG Unl TL', "
       "'VCPPG V3sn Unl', 'VCBCPBG V5sn Unl TL', 'PBG U1', 'VC2PPG V1s U2'; "
-      "or 'FEM'.";
+      "or 'FEM' or 'CPD'.";
 
 
 

@@ -82,4 +82,17 @@ main(int argc, char **argv)
         "    set Function expression = 0.3*t; 0\n  end\nend\n"
         "subsection Newton\n  set Maximum iterations = 1\nend\n"
         "subsection Loading\n  set Maximum step cuts = 1\nend\n");
+  check("CPD without one-neighbour interactions",
+        "subsection Discretization\n  set Formulation = CPD\nend\n"
+        "subsection CPD\n  set C1 = 0\n  set C2 = 1\nend\n");
+  check("CPD volume interactions in 2-D",
+        "subsection Discretization\n  set Formulation = CPD\nend\n"
+        "subsection CPD\n  set C3 = 1\nend\n");
+  check("CPD with a further part",
+        "subsection Discretization\n  set Formulation = CPD U1\nend\n");
+  check("fixed point off the mesh vertices",
+        "subsection Boundary conditions\n  set Fixed points = 0.1, 0.5: "
+        "y\nend\n");
+  check("hole that is not a box",
+        "subsection Geometry\n  set Hole = ball 0.5, 0.5 : 0.2\nend\n");
 }
