@@ -2624,7 +2624,13 @@ namespace pg
         for (unsigned int c = 0; c < dim; ++c)
           u[k][c] = u_full[particles.dof(k, c)];
       }
-    const double deviation = TimeIntegration::affine_fit_deviation(X, u, V);
+    std::vector<std::vector<unsigned int>> neighbours(n);
+    for (unsigned int k = 0; k < n; ++k)
+      for (const unsigned int j : families.members(k))
+        if (j != k)
+          neighbours[k].push_back(j);
+    const double deviation =
+      TimeIntegration::local_fit_deviation(X, u, V, neighbours);
     const double reference = disorder_reference > 0 ?
                                disorder_reference :
                                TimeIntegration::rms_about_mean(u, V);
@@ -2734,13 +2740,18 @@ namespace pg
            << " (omega_max = " << std::sqrt(omega2) << ")";
       pcout << line.str() << std::endl;
     }
+    const auto text = [](const double x) {
+      std::ostringstream s;
+      s << std::setprecision(4) << x;
+      return s.str();
+    };
     if (explicit_)
       AssertThrow(time.time_step <= dt_stable,
                   ExcBadParameter("Time/Time step",
-                                  std::to_string(time.time_step),
+                                  text(time.time_step),
                                   "it exceeds the stable step of leapfrog, "
                                   "2/omega_max = " +
-                                    std::to_string(dt_stable) +
+                                    text(dt_stable) +
                                     " (estimated from the tangent of the "
                                     "initial state): use a smaller step, or "
                                     "0 for the automatic one."));

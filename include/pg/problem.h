@@ -130,7 +130,7 @@ namespace pg
         support_work, balance;
       /**
        * The disorder indicator of the particles (TimeIntegration::
-       * affine_fit_deviation relative to the RMS of the initial
+       * local_fit_deviation relative to the RMS of the initial
        * displacement about its mean); empty without particles.
        */
       std::vector<double> disorder;

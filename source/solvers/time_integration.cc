@@ -1,7 +1,9 @@
 #include <pg/solvers/time_integration.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/full_matrix.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -103,40 +105,53 @@ namespace pg
 
     template <int dim>
     double
-    affine_fit_deviation(const std::vector<Point<dim>>     &X,
-                         const std::vector<Tensor<1, dim>> &u,
-                         const std::vector<double>         &V)
+    local_fit_deviation(
+      const std::vector<Point<dim>>                &X,
+      const std::vector<Tensor<1, dim>>            &u,
+      const std::vector<double>                    &V,
+      const std::vector<std::vector<unsigned int>> &neighbours)
     {
       AssertDimension(X.size(), u.size());
       AssertDimension(X.size(), V.size());
-      double         volume = 0;
-      Tensor<1, dim> X_mean, u_mean;
+      AssertDimension(X.size(), neighbours.size());
+      double sum = 0, volume = 0;
       for (unsigned int k = 0; k < X.size(); ++k)
         {
+          // normal equations of the fit in the basis (1, (X - X^k)/h)
+          double h = 0;
+          for (const unsigned int j : neighbours[k])
+            h = std::max(h, (X[j] - X[k]).norm());
+          if (neighbours[k].size() < dim + 1 || h == 0)
+            continue;
+          FullMatrix<double> G(dim + 1, dim + 1);
+          FullMatrix<double> rhs(dim + 1, dim);
+          for (const unsigned int j : neighbours[k])
+            {
+              std::array<double, dim + 1> p;
+              p[0] = 1;
+              for (unsigned int d = 0; d < dim; ++d)
+                p[d + 1] = (X[j][d] - X[k][d]) / h;
+              for (unsigned int a = 0; a <= dim; ++a)
+                {
+                  for (unsigned int b = 0; b <= dim; ++b)
+                    G(a, b) += p[a] * p[b];
+                  for (unsigned int c = 0; c < dim; ++c)
+                    rhs(a, c) += p[a] * u[j][c];
+                }
+            }
+          FullMatrix<double> copy(G);
+          if (std::abs(copy.determinant()) < 1e-10 * std::pow(G(0, 0), dim + 1))
+            continue;
+          G.gauss_jordan();
+          // the fit at X^k is the constant coefficient a = (G^-1 rhs)_0
+          Tensor<1, dim> fit;
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int b = 0; b <= dim; ++b)
+              fit[c] += G(0, b) * rhs(b, c);
+          sum += V[k] * (u[k] - fit).norm_square();
           volume += V[k];
-          X_mean += V[k] * X[k];
-          u_mean += V[k] * u[k];
         }
-      if (volume <= 0)
-        return 0;
-      X_mean /= volume;
-      u_mean /= volume;
-      // A = (sum V u' x X') (sum V X' x X')^-1 with the centred X', u'
-      Tensor<2, dim> UX, XX;
-      for (unsigned int k = 0; k < X.size(); ++k)
-        {
-          const Tensor<1, dim> dX = X[k] - X_mean;
-          UX += V[k] * outer_product(u[k] - u_mean, dX);
-          XX += V[k] * outer_product(dX, dX);
-        }
-      AssertThrow(std::abs(determinant(XX)) > 0,
-                  ExcMessage("The affine fit needs particles that span the "
-                             "space."));
-      const Tensor<2, dim> A = UX * invert(XX);
-      double               s = 0;
-      for (unsigned int k = 0; k < X.size(); ++k)
-        s += V[k] * (u[k] - u_mean - A * (X[k] - X_mean)).norm_square();
-      return std::sqrt(s / volume);
+      return volume > 0 ? std::sqrt(sum / volume) : 0.;
     }
 
 
@@ -148,12 +163,14 @@ namespace pg
     rms_about_mean<3>(const std::vector<Tensor<1, 3>> &,
                       const std::vector<double> &);
     template double
-    affine_fit_deviation<2>(const std::vector<Point<2>> &,
-                            const std::vector<Tensor<1, 2>> &,
-                            const std::vector<double> &);
+    local_fit_deviation<2>(const std::vector<Point<2>> &,
+                           const std::vector<Tensor<1, 2>> &,
+                           const std::vector<double> &,
+                           const std::vector<std::vector<unsigned int>> &);
     template double
-    affine_fit_deviation<3>(const std::vector<Point<3>> &,
-                            const std::vector<Tensor<1, 3>> &,
-                            const std::vector<double> &);
+    local_fit_deviation<3>(const std::vector<Point<3>> &,
+                           const std::vector<Tensor<1, 3>> &,
+                           const std::vector<double> &,
+                           const std::vector<std::vector<unsigned int>> &);
   } // namespace TimeIntegration
 } // namespace pg

@@ -71,19 +71,25 @@ namespace pg
     /**
      * The disorder indicator of a particle displacement field @p u at the
      * reference positions @p X with volumes @p V: the volume-weighted RMS
-     * of the deviation of u from its best affine fit u ~ A X + b (least
-     * squares over all particles, weighted by V),
-     *   sqrt( sum_k V^k |u^k - A X^k - b|^2 / sum_k V^k ).
-     * Zero for every affine (homogeneous) motion; hourglass and other
-     * non-affine patterns raise it. Callers divide it by a reference
-     * amplitude (Problem: the RMS of the initial displacement about its
-     * mean).
+     * over the particles k of the deviation of u^k from the linear
+     * least-squares fit u ~ a + A (X - X^k) to the displacements of its
+     * @p neighbours (without k itself), evaluated at X^k,
+     *   sqrt( sum_k V^k |u^k - a^k|^2 / sum_k V^k ).
+     * A smooth field gives O(h^2 |grad grad u|) (zero for a linear one),
+     * whatever its wave length beyond a few spacings; particle-scale
+     * patterns (hourglass, zero-energy modes, pairing) give the full
+     * amplitude of the pattern. Particles with fewer than dim + 1
+     * neighbours, or with neighbours on a line (plane), are skipped.
+     * Callers divide it by a reference amplitude (Problem: the RMS of the
+     * initial displacement about its mean).
      */
     template <int dim>
     double
-    affine_fit_deviation(const std::vector<Point<dim>>     &X,
-                         const std::vector<Tensor<1, dim>> &u,
-                         const std::vector<double>         &V);
+    local_fit_deviation(
+      const std::vector<Point<dim>>                &X,
+      const std::vector<Tensor<1, dim>>            &u,
+      const std::vector<double>                    &V,
+      const std::vector<std::vector<unsigned int>> &neighbours);
 
     /**
      * The volume-weighted RMS of @p u about its mean,
