@@ -245,6 +245,13 @@ namespace pg
                  LinearAlgebra::Vector &f_ext,
                  unsigned int          &iterations);
 
+    /**
+     * particles.txt: position, displacement, deformation gradient @p F
+     * and volume of every particle (for plots).
+     */
+    void
+    write_particle_table(const std::vector<Tensor<2, dim>> &F) const;
+
     /** The disorder indicator of the particles at the current state. */
     double
     particle_disorder() const;
@@ -2338,23 +2345,7 @@ namespace pg
           }
         summary.gradient_oscillation =
           deformation > 0 ? std::sqrt(oscillation / deformation) : 0.;
-        if (root)
-          {
-            std::ofstream table(prm.output.directory + "/particles.txt");
-            table << "# x y" << (dim == 3 ? " z" : "") << " u_x u_y"
-                  << (dim == 3 ? " u_z" : "") << " F_ij (row-major) volume\n"
-                  << std::setprecision(10);
-            for (unsigned int k = 0; k < F.size(); ++k)
-              {
-                table << particles.position(k);
-                for (unsigned int c = 0; c < dim; ++c)
-                  table << " " << u_full[particles.dof(k, c)];
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int j = 0; j < dim; ++j)
-                    table << " " << F[k][i][j];
-                table << " " << particles.volume(k) << "\n";
-              }
-          }
+        write_particle_table(F);
       }
 
     write_nodal_stresses(F);
@@ -2387,6 +2378,32 @@ namespace pg
     pcout << "  total Newton iterations: " << summary.newton_iterations
           << std::endl;
     write_files(n_steps, 1.);
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::write_particle_table(
+    const std::vector<Tensor<2, dim>> &F) const
+  {
+    if (root)
+      {
+        std::ofstream table(prm.output.directory + "/particles.txt");
+        table << "# x y" << (dim == 3 ? " z" : "") << " u_x u_y"
+              << (dim == 3 ? " u_z" : "") << " F_ij (row-major) volume\n"
+              << std::setprecision(10);
+        for (unsigned int k = 0; k < F.size(); ++k)
+          {
+            table << particles.position(k);
+            for (unsigned int c = 0; c < dim; ++c)
+              table << " " << u_full[particles.dof(k, c)];
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                table << " " << F[k][i][j];
+            table << " " << particles.volume(k) << "\n";
+          }
+      }
   }
 
 
@@ -2945,6 +2962,8 @@ namespace pg
     std::vector<Tensor<2, dim>> F(particles.n_particles());
     for (unsigned int k = 0; k < F.size(); ++k)
       F[k] = particle_deformation_gradient(k);
+    if (particles.n_particles() > 0)
+      write_particle_table(F);
     write_nodal_stresses(F);
     if (summary.have_errors)
       pcout << "  errors: L2 relative = " << summary.L2_relative
