@@ -118,6 +118,25 @@ namespace pg
       std::vector<double> N, n_dofs, n_free, n_pressure, n_zero, k_pm, beta,
         slope, lambda_max, largest_zero;
     } inf_sup;
+    /**
+     * Dynamics ('Time/Integrator' leapfrog or newmark): the steps and, one
+     * entry per output time, the energies of statistics.txt.
+     */
+    struct Dynamics
+    {
+      std::string integrator;
+      /** dt used, and the stable estimate 2 / omega_max of leapfrog. */
+      double              time_step = 0, stable_time_step = 0;
+      unsigned int        n_steps = 0;
+      std::vector<double> time, kinetic, internal_work, external_work,
+        support_work, balance;
+      /**
+       * The disorder indicator of the particles (TimeIntegration::
+       * local_fit_deviation relative to the RMS of the initial
+       * displacement about its mean); empty without particles.
+       */
+      std::vector<double> disorder;
+    } dynamics;
   };
 
   /**

@@ -843,6 +843,135 @@ namespace pg
 
 
 
+    bool
+    Time::dynamic() const
+    {
+      return integrator != "none";
+    }
+
+
+
+    void
+    Time::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time");
+      {
+        prm.declare_entry(
+          "Integrator",
+          "none",
+          Patterns::Selection("none|leapfrog|newmark"),
+          "'none': quasi-static load stepping (subsection 'Loading'); the "
+          "variable t of the boundary-condition and load functions is the "
+          "load factor from 0 to 1. 'leapfrog': explicit central differences "
+          "(velocity Verlet) with the lumped mass, rho_0 times the integral "
+          "of N_k over all cells (= rho_0 V^k at a particle); one residual "
+          "assembly per step, no matrix. 'newmark': implicit Newmark with "
+          "'Newmark beta' and 'Newmark gamma', Newton's method on the "
+          "effective tangent K + M / (beta dt^2) with the consistent Q1 mass "
+          "on finite element cells and rho_0 V^k at the particles "
+          "(subsections 'Newton' and 'Linear solver' apply). With an "
+          "integrator, t in the boundary-condition and load functions is the "
+          "time (time units) from 0 to 'End time', 'Loading' is ignored, "
+          "and statistics.txt holds the energies: kinetic 1/2 v.M v, the "
+          "work of the internal forces, of the external loads and of the "
+          "supports (the reactions of the constrained DoFs, inertia "
+          "included), each accumulated with the trapezoidal rule, and their "
+          "balance (0 for exact energy conservation).");
+        prm.declare_entry("End time",
+                          "1",
+                          Patterns::Double(),
+                          "The run ends at this time (> 0). Units: time.");
+        prm.declare_entry(
+          "Time step",
+          "0",
+          Patterns::Double(),
+          "dt (>= 0). 0: the stable step of central differences, 2 / "
+          "omega_max, times 'Safety factor', with omega_max^2 the largest "
+          "eigenvalue of M^-1 K (power iteration with the lumped mass and "
+          "the tangent of the initial state), shortened so that the steps "
+          "end at 'End time'. Leapfrog rejects a step above 2 / omega_max. "
+          "Units: time.");
+        prm.declare_entry("Safety factor",
+                          "0.8",
+                          Patterns::Double(),
+                          "Automatic time step: this fraction (0 < f <= 1) "
+                          "of the stable step estimate.");
+        prm.declare_entry("Output interval",
+                          "0",
+                          Patterns::Double(),
+                          "Statistics, VTU files and a progress line (t, "
+                          "step, energies) every so much time (the first "
+                          "step at or after each multiple). 0: every step. "
+                          "Units: time.");
+        prm.declare_entry("Newmark beta",
+                          "0.25",
+                          Patterns::Double(),
+                          "beta of Newmark's method (0 < beta <= 0.5); 1/4 "
+                          "with gamma = 1/2 is the average acceleration "
+                          "rule, unconditionally stable and energy "
+                          "conserving for linear problems.");
+        prm.declare_entry("Newmark gamma",
+                          "0.5",
+                          Patterns::Double(),
+                          "gamma of Newmark's method (0.5 <= gamma <= 1); "
+                          "gamma > 1/2 adds numerical damping.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Time::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time");
+      {
+        integrator      = prm.get("Integrator");
+        end_time        = prm.get_double("End time");
+        time_step       = prm.get_double("Time step");
+        safety_factor   = prm.get_double("Safety factor");
+        output_interval = prm.get_double("Output interval");
+        beta            = prm.get_double("Newmark beta");
+        gamma           = prm.get_double("Newmark gamma");
+      }
+      prm.leave_subsection();
+
+      if (!dynamic())
+        return;
+      const auto text = [](const double x) {
+        std::ostringstream s;
+        s << x;
+        return s.str();
+      };
+      AssertThrow(end_time > 0.,
+                  ExcBadParameter("Time/End time",
+                                  text(end_time),
+                                  "it must be positive."));
+      AssertThrow(time_step >= 0.,
+                  ExcBadParameter("Time/Time step",
+                                  text(time_step),
+                                  "it must be positive, or 0 for the "
+                                  "automatic (stable) step."));
+      AssertThrow(safety_factor > 0. && safety_factor <= 1.,
+                  ExcBadParameter("Time/Safety factor",
+                                  text(safety_factor),
+                                  "it must lie in (0, 1]."));
+      AssertThrow(output_interval >= 0.,
+                  ExcBadParameter("Time/Output interval",
+                                  text(output_interval),
+                                  "it must be >= 0 (0: every step)."));
+      AssertThrow(beta > 0. && beta <= 0.5,
+                  ExcBadParameter("Time/Newmark beta",
+                                  text(beta),
+                                  "it must lie in (0, 0.5]."));
+      AssertThrow(gamma >= 0.5 && gamma <= 1.,
+                  ExcBadParameter("Time/Newmark gamma",
+                                  text(gamma),
+                                  "it must lie in [0.5, 1]."));
+    }
+
+
+
     template <int dim>
     AllParameters<dim>::AllParameters()
       : dimension(dim)
@@ -852,6 +981,8 @@ namespace pg
       , body_force(dim)
       , exact_solution(dim)
       , compute_errors(false)
+      , initial_displacement(dim)
+      , initial_velocity(dim)
     {}
 
 
@@ -910,6 +1041,19 @@ namespace pg
       LinearSolver::declare_parameters(prm);
       Analysis::declare_parameters(prm);
       Output::declare_parameters(prm);
+      Time::declare_parameters(prm);
+      prm.enter_subsection("Time");
+      {
+        // The variables are x, y[, z] (and t, unused); the constants as in
+        // the other function subsections.
+        prm.enter_subsection("Initial displacement");
+        Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
+        prm.leave_subsection();
+        prm.enter_subsection("Initial velocity");
+        Functions::ParsedFunction<dim>::declare_parameters(prm, dim);
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
     }
 
 
@@ -994,6 +1138,17 @@ namespace pg
       linear_solver.parse_parameters(prm);
       analysis.parse_parameters(prm);
       output.parse_parameters(prm, dim);
+      time.parse_parameters(prm);
+      prm.enter_subsection("Time");
+      {
+        prm.enter_subsection("Initial displacement");
+        initial_displacement.parse_parameters(prm);
+        prm.leave_subsection();
+        prm.enter_subsection("Initial velocity");
+        initial_velocity.parse_parameters(prm);
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
 
       AssertThrow(geometry.lower_corner.size() == dim &&
                     geometry.upper_corner.size() == dim,

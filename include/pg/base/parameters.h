@@ -200,6 +200,34 @@ namespace pg
       parse_parameters(ParameterHandler &prm);
     };
 
+    /**
+     * Subsection "Time": quasi-static load stepping (the default) or
+     * dynamics with an explicit or implicit time integrator. The initial
+     * conditions are in AllParameters.
+     */
+    struct Time
+    {
+      /** none | leapfrog | newmark */
+      std::string integrator;
+      double      end_time;
+      /** 0: the stable time step estimate times 'Safety factor'. */
+      double time_step;
+      double safety_factor;
+      /** 0: every step. */
+      double output_interval;
+      double beta;
+      double gamma;
+
+      /** Is an integrator selected (not quasi-static load stepping)? */
+      bool
+      dynamic() const;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
     /** Subsection "Output". */
     struct Output
     {
@@ -220,7 +248,7 @@ namespace pg
      * All parameters of a run in @p dim dimensions, including the parsed
      * functions of the boundary conditions and of the exact solution. The
      * functions take the variables x, y[, z] and t, where t is the load
-     * factor that runs from 0 to 1.
+     * factor that runs from 0 to 1 (with a time integrator: the time).
      */
     template <int dim>
     struct AllParameters
@@ -238,6 +266,7 @@ namespace pg
       LinearSolver       linear_solver;
       Analysis           analysis;
       Output             output;
+      Time               time;
 
       /** Dirichlet values u(X, t) (dim components). */
       Functions::ParsedFunction<dim> prescribed_displacement;
@@ -261,6 +290,10 @@ namespace pg
        */
       std::unique_ptr<FunctionParser<dim>> exact_gradient;
       bool                                 compute_errors;
+      /** Time/Initial displacement u(X, 0) (dim components). */
+      Functions::ParsedFunction<dim> initial_displacement;
+      /** Time/Initial velocity v(X, 0) (dim components). */
+      Functions::ParsedFunction<dim> initial_velocity;
 
       static void
       declare_parameters(ParameterHandler &prm);
