@@ -282,15 +282,15 @@ namespace pg
     DoFHandler<dim>                      dof_handler;
     std::vector<bool>                    meshfree;
 
-    ParticleSet<dim>                                            particles;
-    FamilySet<dim>                                              families;
-    std::unique_ptr<FamilyElements<dim>>                        family_elements;
+    ParticleSet<dim>                     particles;
+    FamilySet<dim>                       families;
+    std::unique_ptr<FamilyElements<dim>> family_elements;
     /**
      * Formulation = CPD: the interactions, assembled in place of the
      * family tables (family_elements then serves the particle deformation
      * gradients of the output only, as PBG U1).
      */
-    std::unique_ptr<CpdInteractions<dim>> cpd;
+    std::unique_ptr<CpdInteractions<dim>>                       cpd;
     std::vector<unsigned int>                                   owned_families;
     std::vector<QuadratureTable<dim>>                           family_tables;
     std::vector<typename DoFHandler<dim>::active_cell_iterator> owned_fe_cells;
@@ -440,7 +440,8 @@ namespace pg
     timer.restart();
     if (particles.n_particles() > 0)
       {
-        const bool is_cpd = (formulation.method == FormulationCode::Method::cpd);
+        const bool is_cpd =
+          (formulation.method == FormulationCode::Method::cpd);
         // CPD with partial volumes: bonds reach delta + h/2
         families.reinit(particles,
                         prm.discretization.horizon_factor +
@@ -722,22 +723,19 @@ namespace pg
         Point<dim> p;
         for (unsigned int d = 0; d < dim; ++d)
           p[d] = coordinates[d];
-        const unsigned int vertex = GridTools::find_closest_vertex(dof_handler, p);
-        const double tolerance =
-          1e-8 * GridTools::diameter(triangulation);
-        AssertThrow(triangulation.get_vertices()[vertex].distance(p) <=
-                      tolerance,
-                    ExcBadParameter("Boundary conditions/Fixed points",
-                                    std::to_string(p[0]) + ", " +
-                                      std::to_string(p[1]) +
-                                      (dim == 3 ? ", " + std::to_string(p[2]) :
-                                                  std::string()),
-                                    "no mesh vertex lies at this point; the "
-                                    "nearest one is at distance " +
-                                      std::to_string(
-                                        triangulation.get_vertices()[vertex]
-                                          .distance(p)) +
-                                      "."));
+        const unsigned int vertex =
+          GridTools::find_closest_vertex(dof_handler, p);
+        const double tolerance = 1e-8 * GridTools::diameter(triangulation);
+        AssertThrow(
+          triangulation.get_vertices()[vertex].distance(p) <= tolerance,
+          ExcBadParameter(
+            "Boundary conditions/Fixed points",
+            std::to_string(p[0]) + ", " + std::to_string(p[1]) +
+              (dim == 3 ? ", " + std::to_string(p[2]) : std::string()),
+            "no mesh vertex lies at this point; the "
+            "nearest one is at distance " +
+              std::to_string(triangulation.get_vertices()[vertex].distance(p)) +
+              "."));
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (const unsigned int v : cell->vertex_indices())
             if (cell->vertex_index(v) == vertex)
@@ -752,7 +750,8 @@ namespace pg
                       c.add_line(dof);
                       if (!homogeneous)
                         c.set_inhomogeneity(
-                          dof, prm.prescribed_displacement.value(p, comp));
+                          dof,
+                          prm.prescribed_displacement.value(p, comp));
                     }
                 break;
               }

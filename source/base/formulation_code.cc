@@ -117,8 +117,7 @@ namespace pg
       {
         result.method = FormulationCode::Method::cpd;
         if (result.bond_correction || result.variational_consistency)
-          reject(code,
-                 "CPD takes no corrections (it has no shape functions).");
+          reject(code, "CPD takes no corrections (it has no shape functions).");
         if (words.size() > 1)
           reject(code,
                  "CPD takes no further parts; its constants are in "

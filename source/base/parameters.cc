@@ -550,14 +550,13 @@ namespace pg
                                                 c == 'y' ? 1 :
                                                 c == 'z' ? 2 :
                                                            99);
-                AssertThrow(component < dim,
-                            ExcBadParameter("Boundary conditions/Fixed points",
-                                            points,
-                                            "components are written with the "
-                                            "letters x, y" +
-                                              std::string(dim == 3 ? ", z" :
-                                                                     "") +
-                                              "."));
+                AssertThrow(
+                  component < dim,
+                  ExcBadParameter("Boundary conditions/Fixed points",
+                                  points,
+                                  "components are written with the "
+                                  "letters x, y" +
+                                    std::string(dim == 3 ? ", z" : "") + "."));
                 mask[component] = true;
               }
             fixed_points.emplace_back(X, mask);

@@ -38,8 +38,7 @@ namespace pg
 
       /** The leading dim x dim block of a 3-D matrix. */
       template <int dim>
-      Tensor<2, dim>
-      restrict(const Tensor<2, 3> &A)
+      Tensor<2, dim> restrict(const Tensor<2, 3> &A)
       {
         Tensor<2, dim> B;
         for (unsigned int p = 0; p < dim; ++p)
@@ -49,8 +48,7 @@ namespace pg
       }
 
       template <int dim>
-      Tensor<1, dim>
-      restrict(const Tensor<1, 3> &a)
+      Tensor<1, dim> restrict(const Tensor<1, 3> &a)
       {
         Tensor<1, dim> b;
         for (unsigned int p = 0; p < dim; ++p)
@@ -114,8 +112,7 @@ namespace pg
               const std::array<Tensor<2, 3>, 2> J = {{-skew(x2), skew(x1)}};
               for (unsigned int m = 0; m < 2; ++m)
                 for (unsigned int p = 0; p < 2; ++p)
-                  d.hessian[m][p] =
-                    restrict<dim>(transpose(J[m]) * Hn * J[p]);
+                  d.hessian[m][p] = restrict<dim>(transpose(J[m]) * Hn * J[p]);
               // sum_c (d psi / d n_c) d^2 n_c / d xi^1_p d xi^2_q = -s [n]x
               const Tensor<2, dim> mixed = restrict<dim>(-s * skew(nv));
               d.hessian[0][1] += mixed;
@@ -127,8 +124,8 @@ namespace pg
           static_assert(n == 3, "interactions have 1, 2 or 3 edges");
           // psi_3 = C (v - V)^2 / (2 V), v = |w|, w = xi^1 . (xi^2 x xi^3)
           // (25), (60); d psi / dw = C (1/V - 1/v) w, d^2 psi / dw^2 = C/V
-          const Tensor<1, 3>                x1 = embed(xi[0]), x2 = embed(xi[1]),
-                             x3 = embed(xi[2]);
+          const Tensor<1, 3> x1 = embed(xi[0]), x2 = embed(xi[1]),
+                             x3                = embed(xi[2]);
           const std::array<Tensor<1, 3>, 3> dw = {{cross_product_3d(x2, x3),
                                                    cross_product_3d(x3, x1),
                                                    cross_product_3d(x1, x2)}};
@@ -169,13 +166,13 @@ namespace pg
      */
     template <int dim, int n>
     double
-    add_interaction(const double                            C,
-                    const double                            weight,
-                    const std::array<std::uint16_t, n>     &nodes,
-                    const std::vector<Tensor<1, dim>>      &X,
-                    const std::vector<Tensor<1, dim>>      &y,
-                    Vector<double>                         *residual,
-                    FullMatrix<double>                     *matrix)
+    add_interaction(const double                        C,
+                    const double                        weight,
+                    const std::array<std::uint16_t, n> &nodes,
+                    const std::vector<Tensor<1, dim>>  &X,
+                    const std::vector<Tensor<1, dim>>  &y,
+                    Vector<double>                     *residual,
+                    FullMatrix<double>                 *matrix)
     {
       std::array<Tensor<1, dim>, n> Xi, xi;
       for (unsigned int m = 0; m < n; ++m)
@@ -287,10 +284,9 @@ namespace pg
             adjacent.assign(n * n, 0);
             for (unsigned int p = first; p < n; ++p)
               for (unsigned int q = p + 1; q < n; ++q)
-                adjacent[p * n + q] = is_neighbour(M[p], M[q]) &&
-                                      bond_factor(a, M[p]) > 0 &&
-                                      bond_factor(a, M[q]) > 0 &&
-                                      bond_factor(M[p], M[q]) > 0;
+                adjacent[p * n + q] =
+                  is_neighbour(M[p], M[q]) && bond_factor(a, M[p]) > 0 &&
+                  bond_factor(a, M[q]) > 0 && bond_factor(M[p], M[q]) > 0;
             const auto X = [&](const unsigned int p) {
               return particles.position(M[p]) - particles.position(a);
             };
@@ -321,7 +317,8 @@ namespace pg
                                 vertices[2].push_back(p);
                                 vertices[2].push_back(q);
                                 vertices[2].push_back(r);
-                                for (const unsigned int v : {a, M[p], M[q], M[r]})
+                                for (const unsigned int v :
+                                     {a, M[p], M[q], M[r]})
                                   quadrature[v][2] += 6;
                               }
                           }
@@ -357,7 +354,7 @@ namespace pg
           }
     };
     // ordered tuples: 2 orderings of a pair, 6 of a triplet
-    for_each_interaction([&](const unsigned int               order,
+    for_each_interaction([&](const unsigned int order,
                              const std::size_t,
                              const std::vector<unsigned int> &t) {
       for (const unsigned int v : t)
@@ -412,7 +409,7 @@ namespace pg
   CpdInteractions<dim>::assemble(const unsigned int                 k,
                                  const std::vector<Tensor<1, dim>> &y,
                                  Vector<double>                    &residual,
-                                 FullMatrix<double>                *matrix) const
+                                 FullMatrix<double> *matrix) const
   {
     const auto         M = families.members(k);
     const unsigned int n = M.size();
@@ -424,8 +421,13 @@ namespace pg
       X[b] = particles.position(M[b]) - particles.position(k);
 
     for (std::size_t e = offsets[0][k]; e < offsets[0][k + 1]; ++e)
-      add_interaction<dim, 1>(
-        cpd.C1, weights[0][e], {{vertices[0][e]}}, X, y, &residual, matrix);
+      add_interaction<dim, 1>(cpd.C1,
+                              weights[0][e],
+                              {{vertices[0][e]}},
+                              X,
+                              y,
+                              &residual,
+                              matrix);
     for (std::size_t e = offsets[1][k]; e < offsets[1][k + 1]; ++e)
       add_interaction<dim, 2>(cpd.C2,
                               weights[1][e],
@@ -454,24 +456,29 @@ namespace pg
   CpdInteractions<dim>::energy(const unsigned int                 k,
                                const std::vector<Tensor<1, dim>> &y) const
   {
-    const auto         M = families.members(k);
-    const unsigned int n = M.size();
+    const auto                  M = families.members(k);
+    const unsigned int          n = M.size();
     std::vector<Tensor<1, dim>> X(n);
     for (unsigned int b = 0; b < n; ++b)
       X[b] = particles.position(M[b]) - particles.position(k);
     double E = 0;
     for (std::size_t e = offsets[0][k]; e < offsets[0][k + 1]; ++e)
-      E += add_interaction<dim, 1>(
-        cpd.C1, weights[0][e], {{vertices[0][e]}}, X, y, nullptr, nullptr);
+      E += add_interaction<dim, 1>(cpd.C1,
+                                   weights[0][e],
+                                   {{vertices[0][e]}},
+                                   X,
+                                   y,
+                                   nullptr,
+                                   nullptr);
     for (std::size_t e = offsets[1][k]; e < offsets[1][k + 1]; ++e)
-      E += add_interaction<dim, 2>(
-        cpd.C2,
-        weights[1][e],
-        {{vertices[1][2 * e], vertices[1][2 * e + 1]}},
-        X,
-        y,
-        nullptr,
-        nullptr);
+      E +=
+        add_interaction<dim, 2>(cpd.C2,
+                                weights[1][e],
+                                {{vertices[1][2 * e], vertices[1][2 * e + 1]}},
+                                X,
+                                y,
+                                nullptr,
+                                nullptr);
     if constexpr (dim == 3)
       for (std::size_t e = offsets[2][k]; e < offsets[2][k + 1]; ++e)
         E += add_interaction<dim, 3>(cpd.C3,

@@ -545,8 +545,9 @@ namespace pg
 
       template <int dim>
       MeshfreeRegion<dim>
-      parse_meshfree_region(const std::string &text,
-                            const std::string &entry = "Geometry/Meshfree region")
+      parse_meshfree_region(
+        const std::string &text,
+        const std::string &entry = "Geometry/Meshfree region")
       {
         const ExcBadParameter bad_region(
           entry,

@@ -18,10 +18,10 @@
 
 #include <deal.II/lac/full_matrix.h>
 
-#include <random>
-
 #include "../particle_fixture.h"
 #include "../tests.h"
+
+#include <random>
 
 using namespace pg;
 
@@ -60,20 +60,21 @@ check_kernel(std::mt19937 &rng)
         auto plus = xi, minus = xi;
         plus[m][c] += h;
         minus[m][c] -= h;
-        const auto dp = CPD::interaction_derivatives<dim, n>(C, Xi, plus, false);
+        const auto dp =
+          CPD::interaction_derivatives<dim, n>(C, Xi, plus, false);
         const auto dm =
           CPD::interaction_derivatives<dim, n>(C, Xi, minus, false);
-        gradient_error =
-          std::max(gradient_error,
-                   std::abs((dp.energy - dm.energy) / (2 * h) -
-                            d.gradient[m][c]));
+        gradient_error = std::max(gradient_error,
+                                  std::abs((dp.energy - dm.energy) / (2 * h) -
+                                           d.gradient[m][c]));
         for (unsigned int p = 0; p < n; ++p)
           for (unsigned int e = 0; e < dim; ++e)
             {
-              hessian_error = std::max(
-                hessian_error,
-                std::abs((dp.gradient[p][e] - dm.gradient[p][e]) / (2 * h) -
-                         d.hessian[p][m][e][c]));
+              hessian_error =
+                std::max(hessian_error,
+                         std::abs((dp.gradient[p][e] - dm.gradient[p][e]) /
+                                    (2 * h) -
+                                  d.hessian[p][m][e][c]));
               scale = std::max(scale, std::abs(d.hessian[p][m][e][c]));
             }
       }
@@ -88,12 +89,12 @@ check_kernel(std::mt19937 &rng)
 /** Global residual, tangent and energy of all families at displacement u. */
 template <int dim>
 double
-assemble_global(const ParticleFixture<dim>  &f,
-                const CpdInteractions<dim>  &cpd,
+assemble_global(const ParticleFixture<dim>        &f,
+                const CpdInteractions<dim>        &cpd,
                 const std::vector<Tensor<1, dim>> &u,
-                std::vector<double>         &r,
-                FullMatrix<double>          &K,
-                const bool                   with_matrix = true)
+                std::vector<double>               &r,
+                FullMatrix<double>                &K,
+                const bool                         with_matrix = true)
 {
   const unsigned int N = f.particles.n_particles();
   r.assign(N * dim, 0.);
@@ -115,9 +116,9 @@ assemble_global(const ParticleFixture<dim>  &f,
             r[M[b] * dim + c] += local(b * dim + c);
             if (with_matrix)
               for (unsigned int p = 0; p < M.size(); ++p)
-              for (unsigned int e = 0; e < dim; ++e)
-                K(M[b] * dim + c, M[p] * dim + e) +=
-                  local_matrix(b * dim + c, p * dim + e);
+                for (unsigned int e = 0; e < dim; ++e)
+                  K(M[b] * dim + c, M[p] * dim + e) +=
+                    local_matrix(b * dim + c, p * dim + e);
           }
     }
   return E;
@@ -137,9 +138,7 @@ brute_force_energy(const ParticleFixture<dim>        &f,
                    const std::vector<Tensor<1, dim>> &u)
 {
   const unsigned int N = f.particles.n_particles();
-  const auto         X = [&](const unsigned int i) {
-    return f.particles.position(i);
-  };
+  const auto X = [&](const unsigned int i) { return f.particles.position(i); };
   const auto x = [&](const unsigned int i) { return X(i) + u[i]; };
   const auto near = [&](const unsigned int i, const unsigned int j) {
     return i != j && X(i).distance(X(j)) <= delta;
@@ -155,28 +154,30 @@ brute_force_energy(const ParticleFixture<dim>        &f,
       double psi1 = 0, psi2 = 0, psi3 = 0, S2 = 0, S3 = 0;
       for (const unsigned int i : H)
         psi1 += f.particles.volume(i) *
-                CPD::interaction_derivatives<dim, 1>(
-                  constants.C1, {{X(i) - X(a)}}, {{x(i) - x(a)}}, false)
+                CPD::interaction_derivatives<dim, 1>(constants.C1,
+                                                     {{X(i) - X(a)}},
+                                                     {{x(i) - x(a)}},
+                                                     false)
                   .energy;
       for (const unsigned int i : H)
         for (const unsigned int j : H)
           if (near(i, j))
             {
-              const std::array<Tensor<1, dim>, 2> Xi = {{X(i) - X(a),
-                                                         X(j) - X(a)}};
-              if (constants.C2 != 0 &&
-                  CPD::reference_measure<dim, 2>(Xi) >
-                    1e-8 * Xi[0].norm() * Xi[1].norm())
+              const std::array<Tensor<1, dim>, 2> Xi = {
+                {X(i) - X(a), X(j) - X(a)}};
+              if (constants.C2 != 0 && CPD::reference_measure<dim, 2>(Xi) >
+                                         1e-8 * Xi[0].norm() * Xi[1].norm())
                 {
                   const double V =
                     f.particles.volume(i) * f.particles.volume(j);
                   S2 += V;
-                  psi2 += V * CPD::interaction_derivatives<dim, 2>(
-                                constants.C2,
-                                Xi,
-                                {{x(i) - x(a), x(j) - x(a)}},
-                                false)
-                                .energy;
+                  psi2 +=
+                    V * CPD::interaction_derivatives<dim, 2>(constants.C2,
+                                                             Xi,
+                                                             {{x(i) - x(a),
+                                                               x(j) - x(a)}},
+                                                             false)
+                          .energy;
                 }
               if constexpr (dim == 3)
                 if (constants.C3 != 0)
@@ -223,10 +224,8 @@ collocation_residual(const ParticleFixture<dim>        &f,
                      const unsigned int                 a,
                      const std::vector<Tensor<1, dim>> &u)
 {
-  const unsigned int N    = f.particles.n_particles();
-  const auto         X    = [&](const unsigned int i) {
-    return f.particles.position(i);
-  };
+  const unsigned int N = f.particles.n_particles();
+  const auto X = [&](const unsigned int i) { return f.particles.position(i); };
   const auto near = [&](const unsigned int i, const unsigned int j) {
     return i != j && X(i).distance(X(j)) <= delta;
   };
@@ -265,8 +264,8 @@ collocation_residual(const ParticleFixture<dim>        &f,
                 {
                   const double V = CPD::reference_measure<dim, 3>(
                     {{X(i) - X(a), X(j) - X(a), X(k) - X(a)}});
-                  if (V <= 1e-8 * (X(i) - X(a)).norm() *
-                             (X(j) - X(a)).norm() * (X(k) - X(a)).norm())
+                  if (V <= 1e-8 * (X(i) - X(a)).norm() * (X(j) - X(a)).norm() *
+                             (X(k) - X(a)).norm())
                     continue;
                   N3 += 1;
                   const double w = xi(i) * cross_product_3d(xi(j), xi(k));
@@ -300,9 +299,8 @@ check_lattice(const unsigned int cells,
   const unsigned int a = f.closest(centre);
   const auto         q = cpd.point_quadrature(a);
   deallog << dim << "-D lattice, delta/h = " << factor
-          << ": interior point: neighbours " << q[0]
-          << ", contributing pairs " << q[1] / 2 << ", triplets " << q[2] / 6
-          << std::endl;
+          << ": interior point: neighbours " << q[0] << ", contributing pairs "
+          << q[1] / 2 << ", triplets " << q[2] / 6 << std::endl;
 
   const unsigned int          N = f.particles.n_particles();
   std::vector<Tensor<1, dim>> u(N);
@@ -311,7 +309,8 @@ check_lattice(const unsigned int cells,
   std::vector<double> r;
   FullMatrix<double>  K;
   const double        E = assemble_global(f, cpd, u, r, K);
-  const double E_brute  = brute_force_energy(f, constants, delta * (1 + 1e-12), u);
+  const double        E_brute =
+    brute_force_energy(f, constants, delta * (1 + 1e-12), u);
   print_bound("  |E - E(brute force)| / E", (E - E_brute) / E, 1e-12);
 
   // the source's collocation residual where all weights are uniform
@@ -337,8 +336,8 @@ check_global(const CpdConstants constants, std::mt19937 &rng)
                          factor + (constants.partial_volumes ? 0.5 : 0.));
   const CpdInteractions<dim> cpd(f.particles, f.families, constants, factor);
   const auto                 n = cpd.n_interactions();
-  deallog << dim << "-D distorted, C = " << constants.C1 << ", "
-          << constants.C2 << ", " << constants.C3 << ", partial volumes "
+  deallog << dim << "-D distorted, C = " << constants.C1 << ", " << constants.C2
+          << ", " << constants.C3 << ", partial volumes "
           << constants.partial_volumes << ": " << n[0] << " bonds, " << n[1]
           << " triangles, " << n[2] << " tetrahedra" << std::endl;
 
@@ -353,7 +352,7 @@ check_global(const CpdConstants constants, std::mt19937 &rng)
   assemble_global(f, cpd, u, r, K);
 
   // every column in 2-D, every 7th in 3-D
-  const double h = 1e-6;
+  const double h              = 1e-6;
   double       residual_error = 0, tangent_error = 0, r_scale = 0, K_scale = 0;
   for (unsigned int j = 0; j < N * dim; j += (dim == 2 ? 1 : 7))
     {
@@ -367,9 +366,9 @@ check_global(const CpdConstants constants, std::mt19937 &rng)
       r_scale = std::max(r_scale, std::abs(r[j]));
       for (unsigned int i = 0; i < N * dim; ++i)
         {
-          tangent_error = std::max(
-            tangent_error,
-            std::abs((r_plus[i] - r_minus[i]) / (2 * h) - K(i, j)));
+          tangent_error =
+            std::max(tangent_error,
+                     std::abs((r_plus[i] - r_minus[i]) / (2 * h) - K(i, j)));
           K_scale = std::max(K_scale, std::abs(K(i, j)));
         }
     }
@@ -399,9 +398,9 @@ check_global(const CpdConstants constants, std::mt19937 &rng)
   for (unsigned int k = 0; k < N; ++k)
     {
       const Tensor<1, dim> X = f.particles.position(k) - Point<dim>();
-      u[k] = Q * X - X + 0.3 * Q[0];
+      u[k]                   = Q * X - X + 0.3 * Q[0];
     }
-  const double E = assemble_global(f, cpd, u, r, K);
+  const double E     = assemble_global(f, cpd, u, r, K);
   double       r_max = 0;
   for (const double v : r)
     r_max = std::max(r_max, std::abs(v));

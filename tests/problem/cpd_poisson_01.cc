@@ -46,8 +46,8 @@ template <int dim>
 double
 measured_poisson_ratio(const std::string &overrides)
 {
-  const std::string file = dim == 2 ? "/../../prm/cpd_poisson_strip.prm" :
-                                      "/../../prm/cpd_poisson_bar_3d.prm";
+  const std::string    file = dim == 2 ? "/../../prm/cpd_poisson_strip.prm" :
+                                         "/../../prm/cpd_poisson_bar_3d.prm";
   std::ostringstream   screen;
   const pg::RunSummary s =
     run_problem<dim>(read_file(SOURCE_DIR + file) + overrides, screen);

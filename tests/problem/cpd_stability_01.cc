@@ -14,10 +14,10 @@
 //   interactions add work, not nonzeros.
 // (C1 = 0 is rejected: tests/problem/input_errors_01.)
 
-#include <algorithm>
-
 #include "../tests.h"
 #include "problem_fixture.h"
+
+#include <algorithm>
 
 template <int dim>
 void
@@ -25,8 +25,9 @@ check(const std::string &base, const std::string &constants)
 {
   std::ostringstream   screen;
   const pg::RunSummary s = run_problem<dim>(
-    base + "subsection Discretization\n set Formulation = CPD\nend\n"
-           "subsection CPD\n" +
+    base +
+      "subsection Discretization\n set Formulation = CPD\nend\n"
+      "subsection CPD\n" +
       constants + "\nend\n",
     screen);
   unsigned int negative = 0;
@@ -39,8 +40,8 @@ check(const std::string &base, const std::string &constants)
   std::replace(label.begin(), label.end(), '\n', ',');
   deallog << dim << "-D, " << label << ": zero eigenvalues "
           << s.n_zero_eigenvalues << ", negative " << negative
-          << ", first non-zero / largest " << first.str()
-          << ", matrix entries " << s.matrix_nonzeros << std::endl;
+          << ", first non-zero / largest " << first.str() << ", matrix entries "
+          << s.matrix_nonzeros << std::endl;
 }
 
 

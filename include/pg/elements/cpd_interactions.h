@@ -25,9 +25,9 @@ namespace pg
     template <int dim, int n>
     struct EdgeDerivatives
     {
-      double                                            energy = 0;
-      std::array<Tensor<1, dim>, n>                     gradient;
-      std::array<std::array<Tensor<2, dim>, n>, n>      hessian;
+      double                                       energy = 0;
+      std::array<Tensor<1, dim>, n>                gradient;
+      std::array<std::array<Tensor<2, dim>, n>, n> hessian;
     };
 
     /**
