@@ -78,6 +78,13 @@ namespace pg
     /** One load (sub)step to load factor @p t; returns success. */
     bool
     solve_step(const double t, unsigned int &iterations);
+    /**
+     * Solve matrix * update = rhs and add the update (with the homogeneous
+     * constraints) to the solution; false, with a message, if the linear
+     * solver does not converge.
+     */
+    bool
+    apply_newton_update();
 
     void
     update_full_solution();
@@ -1579,33 +1586,44 @@ namespace pg
         if (it == prm.newton.maximum_iterations)
           break;
 
-        Timer timer;
-        update = 0;
-        try
-          {
-            solve_linear_system(prm.linear_solver,
-                                dof_handler,
-                                matrix,
-                                update,
-                                rhs);
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            time_solve += timer.wall_time();
-            pcout << "    linear solver did not converge in " << e.last_step
-                  << " iterations" << std::endl;
-            return false;
-          }
-        time_solve += timer.wall_time();
-        ++summary.assembly_cost.n_solves;
-        zero_constraints.distribute(update);
-        solution_owned += update;
-        update_full_solution();
+        if (!apply_newton_update())
+          return false;
         ++iterations;
       }
     pcout << "    Newton did not converge: |R|/|R_0| =" << line.str()
           << std::endl;
     return false;
+  }
+
+
+
+  template <int dim>
+  bool
+  Problem<dim>::Implementation::apply_newton_update()
+  {
+    Timer timer;
+    update = 0;
+    try
+      {
+        solve_linear_system(prm.linear_solver,
+                            dof_handler,
+                            matrix,
+                            update,
+                            rhs);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        time_solve += timer.wall_time();
+        pcout << "    linear solver did not converge in " << e.last_step
+              << " iterations" << std::endl;
+        return false;
+      }
+    time_solve += timer.wall_time();
+    ++summary.assembly_cost.n_solves;
+    zero_constraints.distribute(update);
+    solution_owned += update;
+    update_full_solution();
+    return true;
   }
 
 
@@ -2693,28 +2711,8 @@ namespace pg
           }
         if (it == prm.newton.maximum_iterations)
           break;
-        Timer timer;
-        update = 0;
-        try
-          {
-            solve_linear_system(prm.linear_solver,
-                                dof_handler,
-                                matrix,
-                                update,
-                                rhs);
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            time_solve += timer.wall_time();
-            pcout << "    linear solver did not converge in " << e.last_step
-                  << " iterations" << std::endl;
-            return false;
-          }
-        time_solve += timer.wall_time();
-        ++summary.assembly_cost.n_solves;
-        zero_constraints.distribute(update);
-        solution_owned += update;
-        update_full_solution();
+        if (!apply_newton_update())
+          return false;
         ++iterations;
       }
     pcout << "    Newton did not converge: |R|/|R_0| =" << line.str()

@@ -54,6 +54,39 @@ namespace pg
           }
         return ids;
       }
+
+
+
+      /**
+       * The component mask of the letters x, y, z in @p letters; a wrong
+       * letter is reported for @p entry with its whole value @p text, the
+       * message ending in @p example.
+       */
+      std::vector<bool>
+      parse_components(const std::string &letters,
+                       const unsigned int dim,
+                       const std::string &entry,
+                       const std::string &text,
+                       const std::string &example)
+      {
+        std::vector<bool> mask(dim, false);
+        for (const char c : letters)
+          {
+            const unsigned int component = (c == 'x' ? 0 :
+                                            c == 'y' ? 1 :
+                                            c == 'z' ? 2 :
+                                                       99);
+            AssertThrow(component < dim,
+                        ExcBadParameter(entry,
+                                        text,
+                                        "components are written with the "
+                                        "letters x, y" +
+                                          std::string(dim == 3 ? ", z" : "") +
+                                          example));
+            mask[component] = true;
+          }
+        return mask;
+      }
     } // namespace
 
 
@@ -504,24 +537,13 @@ namespace pg
                                         "components', e.g. '0: xy'."));
             const types::boundary_id id =
               parse_ids(parts[0], "Boundary conditions/Dirichlet")[0];
-            std::vector<bool> mask(dim, false);
-            for (const char c : parts[1])
-              {
-                const unsigned int component = (c == 'x' ? 0 :
-                                                c == 'y' ? 1 :
-                                                c == 'z' ? 2 :
-                                                           99);
-                AssertThrow(component < dim,
-                            ExcBadParameter("Boundary conditions/Dirichlet",
-                                            text,
-                                            "components are written with the "
-                                            "letters x, y" +
-                                              std::string(dim == 3 ? ", z" :
-                                                                     "") +
-                                              ", e.g. '0: xy'."));
-                mask[component] = true;
-              }
-            dirichlet.emplace_back(id, mask);
+            dirichlet.emplace_back(
+              id,
+              parse_components(parts[1],
+                               dim,
+                               "Boundary conditions/Dirichlet",
+                               text,
+                               ", e.g. '0: xy'."));
           }
         fixed_points.clear();
         const std::string points = prm.get("Fixed points");
@@ -543,23 +565,13 @@ namespace pg
                                         "each point needs " +
                                           std::to_string(dim) +
                                           " coordinates."));
-            std::vector<bool> mask(dim, false);
-            for (const char c : parts[1])
-              {
-                const unsigned int component = (c == 'x' ? 0 :
-                                                c == 'y' ? 1 :
-                                                c == 'z' ? 2 :
-                                                           99);
-                AssertThrow(
-                  component < dim,
-                  ExcBadParameter("Boundary conditions/Fixed points",
-                                  points,
-                                  "components are written with the "
-                                  "letters x, y" +
-                                    std::string(dim == 3 ? ", z" : "") + "."));
-                mask[component] = true;
-              }
-            fixed_points.emplace_back(X, mask);
+            fixed_points.emplace_back(
+              X,
+              parse_components(parts[1],
+                               dim,
+                               "Boundary conditions/Fixed points",
+                               points,
+                               "."));
           }
         symmetry =
           parse_ids(prm.get("Symmetry"), "Boundary conditions/Symmetry");

@@ -405,62 +405,17 @@ namespace pg
 
 
   template <int dim>
-  void
-  CpdInteractions<dim>::assemble(const unsigned int                 k,
+  double
+  CpdInteractions<dim>::evaluate(const unsigned int                 k,
                                  const std::vector<Tensor<1, dim>> &y,
-                                 Vector<double>                    &residual,
+                                 Vector<double>                    *residual,
                                  FullMatrix<double> *matrix) const
   {
-    const auto         M = families.members(k);
-    const unsigned int n = M.size();
-    residual.reinit(n * dim);
-    if (matrix != nullptr)
-      matrix->reinit(n * dim, n * dim);
-    std::vector<Tensor<1, dim>> X(n);
-    for (unsigned int b = 0; b < n; ++b)
-      X[b] = particles.position(M[b]) - particles.position(k);
-
-    for (std::size_t e = offsets[0][k]; e < offsets[0][k + 1]; ++e)
-      add_interaction<dim, 1>(cpd.C1,
-                              weights[0][e],
-                              {{vertices[0][e]}},
-                              X,
-                              y,
-                              &residual,
-                              matrix);
-    for (std::size_t e = offsets[1][k]; e < offsets[1][k + 1]; ++e)
-      add_interaction<dim, 2>(cpd.C2,
-                              weights[1][e],
-                              {{vertices[1][2 * e], vertices[1][2 * e + 1]}},
-                              X,
-                              y,
-                              &residual,
-                              matrix);
-    if constexpr (dim == 3)
-      for (std::size_t e = offsets[2][k]; e < offsets[2][k + 1]; ++e)
-        add_interaction<dim, 3>(cpd.C3,
-                                weights[2][e],
-                                {{vertices[2][3 * e],
-                                  vertices[2][3 * e + 1],
-                                  vertices[2][3 * e + 2]}},
-                                X,
-                                y,
-                                &residual,
-                                matrix);
-  }
-
-
-
-  template <int dim>
-  double
-  CpdInteractions<dim>::energy(const unsigned int                 k,
-                               const std::vector<Tensor<1, dim>> &y) const
-  {
     const auto                  M = families.members(k);
-    const unsigned int          n = M.size();
-    std::vector<Tensor<1, dim>> X(n);
-    for (unsigned int b = 0; b < n; ++b)
+    std::vector<Tensor<1, dim>> X(M.size());
+    for (unsigned int b = 0; b < M.size(); ++b)
       X[b] = particles.position(M[b]) - particles.position(k);
+
     double E = 0;
     for (std::size_t e = offsets[0][k]; e < offsets[0][k + 1]; ++e)
       E += add_interaction<dim, 1>(cpd.C1,
@@ -468,8 +423,8 @@ namespace pg
                                    {{vertices[0][e]}},
                                    X,
                                    y,
-                                   nullptr,
-                                   nullptr);
+                                   residual,
+                                   matrix);
     for (std::size_t e = offsets[1][k]; e < offsets[1][k + 1]; ++e)
       E +=
         add_interaction<dim, 2>(cpd.C2,
@@ -477,8 +432,8 @@ namespace pg
                                 {{vertices[1][2 * e], vertices[1][2 * e + 1]}},
                                 X,
                                 y,
-                                nullptr,
-                                nullptr);
+                                residual,
+                                matrix);
     if constexpr (dim == 3)
       for (std::size_t e = offsets[2][k]; e < offsets[2][k + 1]; ++e)
         E += add_interaction<dim, 3>(cpd.C3,
@@ -488,9 +443,35 @@ namespace pg
                                        vertices[2][3 * e + 2]}},
                                      X,
                                      y,
-                                     nullptr,
-                                     nullptr);
+                                     residual,
+                                     matrix);
     return E;
+  }
+
+
+
+  template <int dim>
+  void
+  CpdInteractions<dim>::assemble(const unsigned int                 k,
+                                 const std::vector<Tensor<1, dim>> &y,
+                                 Vector<double>                    &residual,
+                                 FullMatrix<double> *matrix) const
+  {
+    const unsigned int n = families.members(k).size() * dim;
+    residual.reinit(n);
+    if (matrix != nullptr)
+      matrix->reinit(n, n);
+    evaluate(k, y, &residual, matrix);
+  }
+
+
+
+  template <int dim>
+  double
+  CpdInteractions<dim>::energy(const unsigned int                 k,
+                               const std::vector<Tensor<1, dim>> &y) const
+  {
+    return evaluate(k, y, nullptr, nullptr);
   }
 
 

@@ -161,6 +161,17 @@ namespace pg
     constants() const;
 
   private:
+    /**
+     * The energy of the interactions stored in family @p k, and their
+     * residual and tangent added to @p residual and @p matrix (sized by the
+     * caller) where these are not null.
+     */
+    double
+    evaluate(const unsigned int                 k,
+             const std::vector<Tensor<1, dim>> &y,
+             Vector<double>                    *residual,
+             FullMatrix<double>                *matrix) const;
+
     const ParticleSet<dim> &particles;
     const FamilySet<dim>   &families;
     const CpdConstants      cpd;
