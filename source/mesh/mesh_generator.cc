@@ -620,6 +620,9 @@ namespace pg
 
         return region;
       }
+
+
+
       /**
        * 'Hole': remove the coarse cells whose centres lie in the box; the
        * faces of the hole get boundary id 2*dim.
