@@ -308,6 +308,20 @@ namespace pg
     std::vector<
       std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>
       point_locations;
+    /** A sample of 'Output/Lines': line index, arc length, cell, reference. */
+    struct LineSampleLocation
+    {
+      unsigned int                                   line;
+      double                                         arc_length;
+      Point<dim>                                     position;
+      typename DoFHandler<dim>::active_cell_iterator cell;
+      Point<dim>                                     reference;
+    };
+    std::vector<LineSampleLocation> line_locations;
+    /** The Q1 interpolant of u_full at @p reference in @p cell. */
+    std::vector<double>
+    displacement_at(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                    const Point<dim> &reference) const;
     /** Unit-stress residual d^k of every particle (section 8.2). */
     std::vector<Tensor<1, dim>> unit_stress;
 
@@ -508,6 +522,37 @@ namespace pg
                                     name,
                                     "this point lies outside the mesh."));
         point_locations.push_back(found);
+      }
+    // The samples of 'Output/Lines'; those outside the mesh (in a hole) are
+    // left out.
+    line_locations.clear();
+    for (unsigned int l = 0; l < prm.output.lines.size(); ++l)
+      {
+        Point<dim> start, end;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            start[d] = prm.output.lines[l].start[d];
+            end[d]   = prm.output.lines[l].end[d];
+          }
+        const unsigned int n = prm.output.line_samples;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const Point<dim> p = start + (end - start) * (1. * i / (n - 1));
+            try
+              {
+                const auto found =
+                  GridTools::find_active_cell_around_point(mapping,
+                                                           dof_handler,
+                                                           p);
+                if (found.first.state() == IteratorState::valid)
+                  line_locations.push_back(
+                    {l, p.distance(start), p, found.first, found.second});
+              }
+            catch (...)
+              {
+                // outside the mesh: no sample
+              }
+          }
       }
 
     make_constraints(constraints, false);
@@ -762,6 +807,52 @@ namespace pg
                     }
                 break;
               }
+      }
+
+    const double box_tolerance = 1e-10 * GridTools::diameter(triangulation);
+    for (const auto &box : prm.boundary_conditions.dirichlet_boxes)
+      {
+        const auto inside = [&](const Point<dim> &p) {
+          for (unsigned int d = 0; d < dim; ++d)
+            if (p[d] < box.lower[d] - box_tolerance ||
+                p[d] > box.upper[d] + box_tolerance)
+              return false;
+          return true;
+        };
+        bool found = false;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            if (inside(cell->vertex(v)))
+              {
+                found = true;
+                for (unsigned int comp = 0; comp < dim; ++comp)
+                  if (box.components[comp])
+                    {
+                      const types::global_dof_index dof =
+                        cell->vertex_dof_index(v, comp);
+                      if (c.is_constrained(dof))
+                        continue;
+                      c.add_line(dof);
+                      if (!homogeneous)
+                        c.set_inhomogeneity(
+                          dof,
+                          prm.prescribed_displacement.value(cell->vertex(v),
+                                                            comp));
+                    }
+              }
+        std::string corners;
+        for (const auto *corner : {&box.lower, &box.upper})
+          {
+            corners += corners.empty() ? "" : " : ";
+            for (unsigned int d = 0; d < dim; ++d)
+              corners += (d ? ", " : "") + std::to_string((*corner)[d]);
+          }
+        AssertThrow(found,
+                    ExcBadParameter("Boundary conditions/Dirichlet boxes",
+                                    corners,
+                                    "a box holds no mesh vertex; enlarge it "
+                                    "or check its corners against the "
+                                    "geometry."));
       }
 
     for (const types::boundary_id id : prm.boundary_conditions.symmetry)
@@ -1954,15 +2045,35 @@ namespace pg
     // Point values from the Q1 interpolant (the nodal values at vertices).
     summary.points.clear();
     for (unsigned int i = 0; i < point_locations.size(); ++i)
+      summary.points.emplace_back(prm.output.points[i].first,
+                                  displacement_at(point_locations[i].first,
+                                                  point_locations[i].second));
+    summary.line_samples.clear();
+    for (const auto &sample : line_locations)
+      summary.line_samples.push_back(
+        {prm.output.lines[sample.line].name,
+         sample.arc_length,
+         std::vector<double>(sample.position.begin_raw(),
+                             sample.position.end_raw()),
+         displacement_at(sample.cell, sample.reference)});
+    if (root && !line_locations.empty())
       {
-        const auto &[cell, reference] = point_locations[i];
-        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-        cell->get_dof_indices(dofs);
-        std::vector<double> value(dim, 0.);
-        for (unsigned int j = 0; j < dofs.size(); ++j)
-          value[fe.system_to_component_index(j).first] +=
-            fe.shape_value(j, reference) * u_full[dofs[j]];
-        summary.points.emplace_back(prm.output.points[i].first, value);
+        std::ofstream table(prm.output.directory +
+                            "/displacement_along_lines.txt");
+        table << "# displacement along 'Output/Lines' at "
+              << (prm.time.dynamic() ? "time " : "load factor ") << t
+              << "\n# line s x y" << (dim == 3 ? " z" : "") << " u_x u_y"
+              << (dim == 3 ? " u_z" : "") << "\n"
+              << std::setprecision(10);
+        for (const auto &sample : summary.line_samples)
+          {
+            table << sample.line << " " << sample.arc_length;
+            for (const double x : sample.position)
+              table << " " << x;
+            for (const double u : sample.displacement)
+              table << " " << u;
+            table << "\n";
+          }
       }
 
     // Reactions: f_int - f_ext summed over the constrained components of the
@@ -2018,6 +2129,23 @@ namespace pg
     statistics.set_scientific("residual", true);
 
     write_files(step, t);
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Problem<dim>::Implementation::displacement_at(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const Point<dim>                                     &reference) const
+  {
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    cell->get_dof_indices(dofs);
+    std::vector<double> value(dim, 0.);
+    for (unsigned int j = 0; j < dofs.size(); ++j)
+      value[fe.system_to_component_index(j).first] +=
+        fe.shape_value(j, reference) * u_full[dofs[j]];
+    return value;
   }
 
 

@@ -37,6 +37,14 @@ namespace pg
     std::vector<std::vector<double>> newton_residuals;
     /** name -> displacement at the final converged step. */
     std::vector<std::pair<std::string, std::vector<double>>> points;
+    /** A sample of 'Output/Lines' at the final converged step. */
+    struct LineSample
+    {
+      std::string         line;
+      double              arc_length;
+      std::vector<double> position, displacement;
+    };
+    std::vector<LineSample> line_samples;
     /** Dirichlet boundary id -> reaction force (f_int - f_ext). */
     std::map<types::boundary_id, std::vector<double>> reactions;
     bool                                              have_errors = false;

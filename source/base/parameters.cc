@@ -468,6 +468,17 @@ namespace pg
           "vertex at each point take the values of subsection 'Prescribed "
           "displacement' (a vertex must lie there). For removing the rigid "
           "motions of a laterally free specimen.");
+        prm.declare_entry(
+          "Dirichlet boxes",
+          "",
+          Patterns::Anything(),
+          "Semicolon-separated 'x0, y0 : x1, y1 : components' items (dim "
+          "coordinates per corner), e.g. '-1, 0 : 0, 1 : xy'. The listed "
+          "displacement components of every mesh vertex in the closed box "
+          "take the values of subsection 'Prescribed displacement'. For "
+          "clamping non-local models (CPD, large horizons) through a layer "
+          "of thickness delta rather than a boundary line, whose influence "
+          "vanishes as the lattice is refined.");
         prm.declare_entry("Symmetry",
                           "",
                           Patterns::Anything(),
@@ -572,6 +583,41 @@ namespace pg
                                "Boundary conditions/Fixed points",
                                points,
                                "."));
+          }
+        dirichlet_boxes.clear();
+        const std::string boxes = prm.get("Dirichlet boxes");
+        for (const std::string &item : Utilities::split_string_list(boxes, ';'))
+          {
+            const std::vector<std::string> parts =
+              Utilities::split_string_list(item, ':');
+            AssertThrow(parts.size() == 3,
+                        ExcBadParameter("Boundary conditions/Dirichlet boxes",
+                                        boxes,
+                                        "each item must read 'x0, y0 : x1, y1 "
+                                        ": components', e.g. '-1, 0 : 0, 1 : "
+                                        "xy'."));
+            DirichletBox box{
+              parse_doubles(parts[0], "Boundary conditions/Dirichlet boxes"),
+              parse_doubles(parts[1], "Boundary conditions/Dirichlet boxes"),
+              parse_components(parts[2],
+                               dim,
+                               "Boundary conditions/Dirichlet boxes",
+                               boxes,
+                               ", e.g. '-1, 0 : 0, 1 : xy'.")};
+            AssertThrow(box.lower.size() == dim && box.upper.size() == dim,
+                        ExcBadParameter("Boundary conditions/Dirichlet boxes",
+                                        boxes,
+                                        "each corner needs " +
+                                          std::to_string(dim) +
+                                          " coordinates."));
+            for (unsigned int d = 0; d < dim; ++d)
+              AssertThrow(box.lower[d] <= box.upper[d],
+                          ExcBadParameter(
+                            "Boundary conditions/Dirichlet boxes",
+                            boxes,
+                            "the first corner of each box must be the lower "
+                            "one (x0 <= x1, y0 <= y1)."));
+            dirichlet_boxes.push_back(box);
           }
         symmetry =
           parse_ids(prm.get("Symmetry"), "Boundary conditions/Symmetry");
@@ -809,6 +855,22 @@ namespace pg
                           "elsewhere) and, with 'Compute errors', the exact "
                           "stress. E.g. the symmetry lines of the plate with "
                           "a hole: '1, 2'.");
+        prm.declare_entry(
+          "Lines",
+          "",
+          Patterns::Anything(),
+          "Named straight lines along which the displacement is written to "
+          "displacement_along_lines.txt after every step: 'name: x0, y0 : x1, "
+          "y1; name: ...' (dim coordinates per end). The displacement is the "
+          "Q1 interpolant of the nodal values (particles included) at 'Line "
+          "samples' equally spaced points; points outside the mesh (in a "
+          "hole) are left out. E.g. the upper edge of the unit square: 'BB: "
+          "0, 1 : 1, 1'.");
+        prm.declare_entry("Line samples",
+                          "101",
+                          Patterns::Integer(2),
+                          "Number of equally spaced points on each of the "
+                          "'Lines', both ends included.");
       }
       prm.leave_subsection();
     }
@@ -844,6 +906,35 @@ namespace pg
                                           " coordinates."));
             points.emplace_back(parts[0], coordinates);
           }
+        lines.clear();
+        const std::string line_text = prm.get("Lines");
+        for (const std::string &item :
+             Utilities::split_string_list(line_text, ';'))
+          {
+            const std::vector<std::string> parts =
+              Utilities::split_string_list(item, ':');
+            AssertThrow(parts.size() == 3,
+                        ExcBadParameter("Output/Lines",
+                                        line_text,
+                                        "each line must read 'name: x0, y0 "
+                                        ": x1, y1'."));
+            Line line{parts[0],
+                      parse_doubles(parts[1], "Output/Lines"),
+                      parse_doubles(parts[2], "Output/Lines")};
+            AssertThrow(line.start.size() == dim && line.end.size() == dim,
+                        ExcBadParameter("Output/Lines",
+                                        line_text,
+                                        "each end of a line needs " +
+                                          std::to_string(dim) +
+                                          " coordinates."));
+            AssertThrow(line.start != line.end,
+                        ExcBadParameter("Output/Lines",
+                                        line_text,
+                                        "the line '" + line.name +
+                                          "' has equal ends."));
+            lines.push_back(line);
+          }
+        line_samples = prm.get_integer("Line samples");
       }
       prm.leave_subsection();
       AssertThrow(!directory.empty(),

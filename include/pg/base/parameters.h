@@ -135,6 +135,18 @@ namespace pg
        */
       std::vector<std::pair<std::vector<double>, std::vector<bool>>>
         fixed_points;
+      /**
+       * 'Dirichlet boxes': every mesh vertex in the closed box between two
+       * corners (dim coordinates each) has the listed components
+       * prescribed, e.g. the layers of thickness delta through which
+       * non-local models are clamped.
+       */
+      struct DirichletBox
+      {
+        std::vector<double> lower, upper;
+        std::vector<bool>   components;
+      };
+      std::vector<DirichletBox> dirichlet_boxes;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -237,6 +249,15 @@ namespace pg
       std::vector<std::pair<std::string, std::vector<double>>> points;
       /** Boundary ids whose vertex stresses go to a table. */
       std::vector<types::boundary_id> stress_boundaries;
+      /** A named segment for displacement_along_lines.txt. */
+      struct Line
+      {
+        std::string         name;
+        std::vector<double> start, end;
+      };
+      std::vector<Line> lines;
+      /** Points per line, both ends included. */
+      unsigned int line_samples;
 
       static void
       declare_parameters(ParameterHandler &prm);
