@@ -2791,7 +2791,7 @@ namespace pg
     const double c0 = 1. / (beta * dt * dt);
     set_load_factor(t_new);
     compute_external_force(f_ext);
-    if (!prm.boundary_conditions.dirichlet.empty())
+    if (prm.boundary_conditions.prescribes_values())
       make_constraints(constraints, false);
     // the predictor u~ = u + dt v + dt^2 (1/2 - beta) a, i.e. a_new = 0
     LinearAlgebra::Vector u_tilde(solution_owned);
@@ -3113,7 +3113,7 @@ namespace pg
             v.add(0.5 * dt, a);
             solution_owned.add(dt, v);
             set_load_factor(t_new);
-            if (!prm.boundary_conditions.dirichlet.empty())
+            if (prm.boundary_conditions.prescribes_values())
               make_constraints(constraints, false);
             constraints.distribute(solution_owned);
             update_full_solution();

@@ -155,7 +155,7 @@ plot() { # <png> <title> <prefix> <fem: yes|no> <n1> <label1> ...
     echo "set output '$png'"
     echo "set multiplot layout 2,2 title '$title'"
     echo "set xlabel 'x'; set ylabel 'u_y'; set key bottom center font ',9'"
-    echo "set format y '%.0e'"
+    echo "set format y '%.1e'"
     for hole in false true; do
       for line in AA BB; do
         specimen=full

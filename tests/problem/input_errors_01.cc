@@ -95,4 +95,12 @@ main(int argc, char **argv)
         "y\nend\n");
   check("hole that is not a box",
         "subsection Geometry\n  set Hole = ball 0.5, 0.5 : 0.2\nend\n");
+  check("Dirichlet box with the corners swapped",
+        "subsection Boundary conditions\n  set Dirichlet boxes = 1, 1 : 0, 0 "
+        ": xy\nend\n");
+  check("Dirichlet box that holds no vertex",
+        "subsection Boundary conditions\n  set Dirichlet boxes = 5, 5 : 6, 6 "
+        ": xy\nend\n");
+  check("line without an end",
+        "subsection Output\n  set Lines = AA: 0, 0.7\nend\n");
 }

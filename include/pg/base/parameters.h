@@ -148,6 +148,14 @@ namespace pg
       };
       std::vector<DirichletBox> dirichlet_boxes;
 
+      /** Whether 'Dirichlet', 'Fixed points' or 'Dirichlet boxes' is set. */
+      bool
+      prescribes_values() const
+      {
+        return !dirichlet.empty() || !fixed_points.empty() ||
+               !dirichlet_boxes.empty();
+      }
+
       static void
       declare_parameters(ParameterHandler &prm);
       void
