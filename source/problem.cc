@@ -834,10 +834,9 @@ namespace pg
                         continue;
                       c.add_line(dof);
                       if (!homogeneous)
-                        c.set_inhomogeneity(
-                          dof,
-                          prm.prescribed_displacement.value(cell->vertex(v),
-                                                            comp));
+                        c.set_inhomogeneity(dof,
+                                            prm.prescribed_displacement
+                                              .value(cell->vertex(v), comp));
                     }
               }
         std::string corners;

@@ -64,7 +64,7 @@ main(int argc, char **argv)
     const pg::RunSummary s =
       run_beam("subsection Discretization\n set Formulation = PBG U1\nend\n"
                "subsection Time\n set End time = 2.682\nend\n");
-    const auto  &d = s.dynamics;
+    const auto &d = s.dynamics;
     // from u_y = 0.1 mm on: before, only the mid cross-section has moved
     double       early = 0;
     unsigned int i     = 0;
@@ -76,7 +76,9 @@ main(int argc, char **argv)
       late = std::max(late, d.disorder[i]);
     deallog << "(a) PBG U1, leapfrog, up to u_y = "
             << one_decimal(deflection(d.time.back())) << " mm" << std::endl;
-    print_bound("  max pairing indicator for u_y = 0.1 ... 2.5 mm", early, 0.06);
+    print_bound("  max pairing indicator for u_y = 0.1 ... 2.5 mm",
+                early,
+                0.06);
     deallog << "  max pairing indicator after: "
             << (late > 0.15 ? "above 0.15" : "NOT above 0.15") << std::endl;
   }
@@ -95,6 +97,8 @@ main(int argc, char **argv)
                 (d.internal_work.back() - d.support_work.back()) /
                   d.internal_work.back(),
                 1e-3);
-    print_bound("  E_kin / W_int", d.kinetic.back() / d.internal_work.back(), 1e-3);
+    print_bound("  E_kin / W_int",
+                d.kinetic.back() / d.internal_work.back(),
+                1e-3);
   }
 }

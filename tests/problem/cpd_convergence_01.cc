@@ -36,7 +36,7 @@ run_square(const unsigned int n,
            const bool         fem = false)
 {
   // the grips: ceil(factor) lattice rows on either side (none for FEM)
-  const unsigned int m     = fem ? 0 : static_cast<unsigned int>(std::ceil(factor));
+  const unsigned int m = fem ? 0 : static_cast<unsigned int>(std::ceil(factor));
   const double       width = 1. * m / n;
   std::ostringstream prm;
   prm << std::setprecision(17)
@@ -107,17 +107,19 @@ main(int argc, char **argv)
             for (const std::string line : {"AA", "BB"})
               for (int k = 0; k <= 20; ++k)
                 {
-                  const auto here  = u.find(line + " " + std::to_string(k));
-                  const auto there = u.find(line + " " + std::to_string(20 - k));
+                  const auto here = u.find(line + " " + std::to_string(k));
+                  const auto there =
+                    u.find(line + " " + std::to_string(20 - k));
                   if (here == u.end() || there == u.end())
                     continue;
-                  asymmetry = std::max(asymmetry,
-                                       std::abs(here->second - there->second));
-                  largest   = std::max(largest, std::abs(here->second));
+                  asymmetry =
+                    std::max(asymmetry, std::abs(here->second - there->second));
+                  largest = std::max(largest, std::abs(here->second));
                 }
-            deallog << "  h = 1/" << n << ": min u_y(BB') / 1e-4 = "
-                    << std::fixed << std::setprecision(3)
-                    << u.at("BB 10") / 1e-4 << std::defaultfloat;
+            deallog << "  h = 1/" << n
+                    << ": min u_y(BB') / 1e-4 = " << std::fixed
+                    << std::setprecision(3) << u.at("BB 10") / 1e-4
+                    << std::defaultfloat;
             const bool contracts = u.at("BB 10") < u.at("BB 4") &&
                                    u.at("BB 4") < u.at("BB 1") &&
                                    u.at("BB 1") < 0;
@@ -149,7 +151,7 @@ main(int argc, char **argv)
           << std::endl;
   for (const bool hole : {false, true})
     {
-      const Profile fem = run_square(80, 1, hole, false, true);
+      const Profile fem                = run_square(80, 1, hole, false, true);
       double        previous_deviation = 1e300;
       for (const unsigned int n : {10u, 20u, 40u})
         {
