@@ -749,26 +749,33 @@ namespace pg
 
     // Dirichlet first: where a Dirichlet and a symmetry condition meet, the
     // Dirichlet value wins.
+    // The components in @p mask of vertex v of @p object (a cell or a face)
+    // take the prescribed values, unless they are constrained already.
+    const auto prescribe = [&](const auto              &object,
+                               const unsigned int       v,
+                               const std::vector<bool> &mask) {
+      for (unsigned int comp = 0; comp < dim; ++comp)
+        if (mask[comp])
+          {
+            const types::global_dof_index dof =
+              object->vertex_dof_index(v, comp);
+            if (c.is_constrained(dof))
+              continue;
+            c.add_line(dof);
+            if (!homogeneous)
+              c.set_inhomogeneity(
+                dof,
+                prm.prescribed_displacement.value(object->vertex(v), comp));
+          }
+    };
+
     for (const auto &[id, mask] : prm.boundary_conditions.dirichlet)
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
               cell->face(f)->boundary_id() == id)
             for (const unsigned int v : cell->face(f)->vertex_indices())
-              for (unsigned int comp = 0; comp < dim; ++comp)
-                if (mask[comp])
-                  {
-                    const types::global_dof_index dof =
-                      cell->face(f)->vertex_dof_index(v, comp);
-                    if (c.is_constrained(dof))
-                      continue;
-                    c.add_line(dof);
-                    if (!homogeneous)
-                      c.set_inhomogeneity(dof,
-                                          prm.prescribed_displacement.value(
-                                            cell->face(f)->vertex(v),
-                                            comp));
-                  }
+              prescribe(cell->face(f), v, mask);
 
     for (const auto &[coordinates, mask] : prm.boundary_conditions.fixed_points)
       {
@@ -792,19 +799,7 @@ namespace pg
           for (const unsigned int v : cell->vertex_indices())
             if (cell->vertex_index(v) == vertex)
               {
-                for (unsigned int comp = 0; comp < dim; ++comp)
-                  if (mask[comp])
-                    {
-                      const types::global_dof_index dof =
-                        cell->vertex_dof_index(v, comp);
-                      if (c.is_constrained(dof))
-                        continue;
-                      c.add_line(dof);
-                      if (!homogeneous)
-                        c.set_inhomogeneity(
-                          dof,
-                          prm.prescribed_displacement.value(p, comp));
-                    }
+                prescribe(cell, v, mask);
                 break;
               }
       }
@@ -825,19 +820,7 @@ namespace pg
             if (inside(cell->vertex(v)))
               {
                 found = true;
-                for (unsigned int comp = 0; comp < dim; ++comp)
-                  if (box.components[comp])
-                    {
-                      const types::global_dof_index dof =
-                        cell->vertex_dof_index(v, comp);
-                      if (c.is_constrained(dof))
-                        continue;
-                      c.add_line(dof);
-                      if (!homogeneous)
-                        c.set_inhomogeneity(dof,
-                                            prm.prescribed_displacement
-                                              .value(cell->vertex(v), comp));
-                    }
+                prescribe(cell, v, box.components);
               }
         std::string corners;
         for (const auto *corner : {&box.lower, &box.upper})
