@@ -747,8 +747,6 @@ namespace pg
     c.clear();
     c.reinit(relevant_dofs);
 
-    // Dirichlet first: where a Dirichlet and a symmetry condition meet, the
-    // Dirichlet value wins.
     // The components in @p mask of vertex v of @p object (a cell or a face)
     // take the prescribed values, unless they are constrained already.
     const auto prescribe = [&](const auto              &object,
@@ -769,6 +767,8 @@ namespace pg
           }
     };
 
+    // Dirichlet first: where a Dirichlet and a symmetry condition meet, the
+    // Dirichlet value wins.
     for (const auto &[id, mask] : prm.boundary_conditions.dirichlet)
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
