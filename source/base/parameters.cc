@@ -87,6 +87,53 @@ namespace pg
           }
         return mask;
       }
+
+
+
+      /**
+       * The items of the @p separator-separated list @p text of @p entry,
+       * each split at ':' into exactly @p n_parts parts; otherwise the
+       * message @p form (how an item must read).
+       */
+      std::vector<std::vector<std::string>>
+      parse_items(const std::string &text,
+                  const char         separator,
+                  const unsigned int n_parts,
+                  const std::string &entry,
+                  const std::string &form)
+      {
+        std::vector<std::vector<std::string>> items;
+        for (const std::string &item :
+             Utilities::split_string_list(text, separator))
+          {
+            items.push_back(Utilities::split_string_list(item, ':'));
+            AssertThrow(items.back().size() == n_parts,
+                        ExcBadParameter(entry, text, form));
+          }
+        return items;
+      }
+
+
+
+      /**
+       * @p part of the value @p text of @p entry as dim coordinates;
+       * otherwise the message "<what> needs <dim> coordinates.".
+       */
+      std::vector<double>
+      parse_coordinates(const std::string &part,
+                        const unsigned int dim,
+                        const std::string &entry,
+                        const std::string &text,
+                        const std::string &what)
+      {
+        const std::vector<double> coordinates = parse_doubles(part, entry);
+        AssertThrow(coordinates.size() == dim,
+                    ExcBadParameter(entry,
+                                    text,
+                                    what + " needs " + std::to_string(dim) +
+                                      " coordinates."));
+        return coordinates;
+      }
     } // namespace
 
 
@@ -537,15 +584,14 @@ namespace pg
       {
         dirichlet.clear();
         const std::string text = prm.get("Dirichlet");
-        for (const std::string &item : Utilities::split_string_list(text, ','))
+        for (const auto &parts :
+             parse_items(text,
+                         ',',
+                         2,
+                         "Boundary conditions/Dirichlet",
+                         "each item must read 'boundary id: components', "
+                         "e.g. '0: xy'."))
           {
-            const std::vector<std::string> parts =
-              Utilities::split_string_list(item, ':');
-            AssertThrow(parts.size() == 2,
-                        ExcBadParameter("Boundary conditions/Dirichlet",
-                                        text,
-                                        "each item must read 'boundary id: "
-                                        "components', e.g. '0: xy'."));
             const types::boundary_id id =
               parse_ids(parts[0], "Boundary conditions/Dirichlet")[0];
             dirichlet.emplace_back(
@@ -558,26 +604,20 @@ namespace pg
           }
         fixed_points.clear();
         const std::string points = prm.get("Fixed points");
-        for (const std::string &item :
-             Utilities::split_string_list(points, ';'))
+        for (const auto &parts :
+             parse_items(points,
+                         ';',
+                         2,
+                         "Boundary conditions/Fixed points",
+                         "each item must read 'coordinates: components', "
+                         "e.g. '0, 0.5: y'."))
           {
-            const std::vector<std::string> parts =
-              Utilities::split_string_list(item, ':');
-            AssertThrow(parts.size() == 2,
-                        ExcBadParameter("Boundary conditions/Fixed points",
-                                        points,
-                                        "each item must read 'coordinates: "
-                                        "components', e.g. '0, 0.5: y'."));
-            const std::vector<double> X =
-              parse_doubles(parts[0], "Boundary conditions/Fixed points");
-            AssertThrow(X.size() == dim,
-                        ExcBadParameter("Boundary conditions/Fixed points",
-                                        points,
-                                        "each point needs " +
-                                          std::to_string(dim) +
-                                          " coordinates."));
             fixed_points.emplace_back(
-              X,
+              parse_coordinates(parts[0],
+                                dim,
+                                "Boundary conditions/Fixed points",
+                                points,
+                                "each point"),
               parse_components(parts[1],
                                dim,
                                "Boundary conditions/Fixed points",
@@ -585,35 +625,28 @@ namespace pg
                                "."));
           }
         dirichlet_boxes.clear();
-        const std::string boxes = prm.get("Dirichlet boxes");
-        for (const std::string &item : Utilities::split_string_list(boxes, ';'))
+        const std::string boxes     = prm.get("Dirichlet boxes");
+        const std::string box_entry = "Boundary conditions/Dirichlet boxes";
+        for (const auto &parts :
+             parse_items(boxes,
+                         ';',
+                         3,
+                         box_entry,
+                         "each item must read 'x0, y0 : x1, y1 : components', "
+                         "e.g. '-1, 0 : 0, 1 : xy'."))
           {
-            const std::vector<std::string> parts =
-              Utilities::split_string_list(item, ':');
-            AssertThrow(parts.size() == 3,
-                        ExcBadParameter("Boundary conditions/Dirichlet boxes",
-                                        boxes,
-                                        "each item must read 'x0, y0 : x1, y1 "
-                                        ": components', e.g. '-1, 0 : 0, 1 : "
-                                        "xy'."));
             DirichletBox box{
-              parse_doubles(parts[0], "Boundary conditions/Dirichlet boxes"),
-              parse_doubles(parts[1], "Boundary conditions/Dirichlet boxes"),
+              parse_coordinates(parts[0], dim, box_entry, boxes, "each corner"),
+              parse_coordinates(parts[1], dim, box_entry, boxes, "each corner"),
               parse_components(parts[2],
                                dim,
-                               "Boundary conditions/Dirichlet boxes",
+                               box_entry,
                                boxes,
                                ", e.g. '-1, 0 : 0, 1 : xy'.")};
-            AssertThrow(box.lower.size() == dim && box.upper.size() == dim,
-                        ExcBadParameter("Boundary conditions/Dirichlet boxes",
-                                        boxes,
-                                        "each corner needs " +
-                                          std::to_string(dim) +
-                                          " coordinates."));
             for (unsigned int d = 0; d < dim; ++d)
               AssertThrow(box.lower[d] <= box.upper[d],
                           ExcBadParameter(
-                            "Boundary conditions/Dirichlet boxes",
+                            box_entry,
                             boxes,
                             "the first corner of each box must be the lower "
                             "one (x0 <= x1, y0 <= y1)."));
@@ -888,45 +921,38 @@ namespace pg
         stress_boundaries      = parse_ids(prm.get("Stress along boundaries"),
                                       "Output/Stress along boundaries");
         const std::string text = prm.get("Points");
-        for (const std::string &item : Utilities::split_string_list(text, ';'))
-          {
-            const std::vector<std::string> parts =
-              Utilities::split_string_list(item, ':');
-            AssertThrow(parts.size() == 2,
-                        ExcBadParameter("Output/Points",
-                                        text,
-                                        "each point must read 'name: x, y'."));
-            const std::vector<double> coordinates =
-              parse_doubles(parts[1], "Output/Points");
-            AssertThrow(coordinates.size() == dim,
-                        ExcBadParameter("Output/Points",
-                                        text,
-                                        "each point needs " +
-                                          std::to_string(dim) +
-                                          " coordinates."));
-            points.emplace_back(parts[0], coordinates);
-          }
+        for (const auto &parts :
+             parse_items(text,
+                         ';',
+                         2,
+                         "Output/Points",
+                         "each point must read 'name: x, y'."))
+          points.emplace_back(parts[0],
+                              parse_coordinates(parts[1],
+                                                dim,
+                                                "Output/Points",
+                                                text,
+                                                "each point"));
         lines.clear();
         const std::string line_text = prm.get("Lines");
-        for (const std::string &item :
-             Utilities::split_string_list(line_text, ';'))
+        for (const auto &parts :
+             parse_items(line_text,
+                         ';',
+                         3,
+                         "Output/Lines",
+                         "each line must read 'name: x0, y0 : x1, y1'."))
           {
-            const std::vector<std::string> parts =
-              Utilities::split_string_list(item, ':');
-            AssertThrow(parts.size() == 3,
-                        ExcBadParameter("Output/Lines",
-                                        line_text,
-                                        "each line must read 'name: x0, y0 "
-                                        ": x1, y1'."));
-            Line line{parts[0],
-                      parse_doubles(parts[1], "Output/Lines"),
-                      parse_doubles(parts[2], "Output/Lines")};
-            AssertThrow(line.start.size() == dim && line.end.size() == dim,
-                        ExcBadParameter("Output/Lines",
-                                        line_text,
-                                        "each end of a line needs " +
-                                          std::to_string(dim) +
-                                          " coordinates."));
+            const Line line{parts[0],
+                            parse_coordinates(parts[1],
+                                              dim,
+                                              "Output/Lines",
+                                              line_text,
+                                              "each end of a line"),
+                            parse_coordinates(parts[2],
+                                              dim,
+                                              "Output/Lines",
+                                              line_text,
+                                              "each end of a line")};
             AssertThrow(line.start != line.end,
                         ExcBadParameter("Output/Lines",
                                         line_text,
