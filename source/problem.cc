@@ -273,6 +273,12 @@ namespace pg
     TimeIntegration::Energies   energies;
     /** RMS of the initial particle displacement about its mean. */
     double disorder_reference = 0;
+    /**
+     * GridTools::diameter() of the final mesh (O(boundary vertices^2), so
+     * computed once in setup()): the scale of the geometric tolerances of
+     * make_constraints(), which dynamics calls every step.
+     */
+    double mesh_diameter = 0;
 
     const Parameters::AllParameters<dim> &prm;
     /** prm.geometry, replaced per mesh by the inf-sup analysis. */
@@ -555,6 +561,7 @@ namespace pg
           }
       }
 
+    mesh_diameter = GridTools::diameter(triangulation);
     make_constraints(constraints, false);
     make_constraints(zero_constraints, true);
 
@@ -784,7 +791,7 @@ namespace pg
           p[d] = coordinates[d];
         const unsigned int vertex =
           GridTools::find_closest_vertex(dof_handler, p);
-        const double tolerance = 1e-8 * GridTools::diameter(triangulation);
+        const double tolerance = 1e-8 * mesh_diameter;
         AssertThrow(
           triangulation.get_vertices()[vertex].distance(p) <= tolerance,
           ExcBadParameter(
@@ -804,7 +811,7 @@ namespace pg
               }
       }
 
-    const double box_tolerance = 1e-10 * GridTools::diameter(triangulation);
+    const double box_tolerance = 1e-10 * mesh_diameter;
     for (const auto &box : prm.boundary_conditions.dirichlet_boxes)
       {
         const auto inside = [&](const Point<dim> &p) {
