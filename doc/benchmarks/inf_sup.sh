@@ -32,10 +32,10 @@ for d in 0 0.3; do
   tag=regular; [ "$d" = 0 ] || tag=distorted
   run q1_$tag         FEM       displacement $d
   run q1p0_$tag       FEM       P0           $d
-  run pbg_unl_$tag    "PBG Unl"   displacement $d
+  run pbg_unl_$tag    "PBG Unl noBC" displacement $d
   run bcpbg_unl_$tag  "BCPBG Unl" displacement $d
   run pbg_u1_$tag     "PBG U1"    displacement $d
-  run pbg_unlp0_$tag  "PBG Unl"   P0           $d
+  run pbg_unlp0_$tag  "PBG Unl noBC" P0        $d
 done
 rm -rf "$WORK"
 gnuplot doc/benchmarks/inf_sup.gp

@@ -8,13 +8,15 @@ namespace pg
   namespace
   {
     const std::string valid_parts =
-      "Valid codes read '[VC|VC2][BC]<method> [V<n><b>] <points> [TL]' "
-      "with <method> = PBG, PPG (= PPG1), PPG1 or PPG2, the VC correction "
-      "function V1, V3 or V5 (default V3 for PPG, V5 for PBG, V1 for VC2) "
-      "and its boundary option <b> = p, s or sn (default sn; VC2 takes s), "
-      "and <points> = Unl, U1 (PBG only) or U2, e.g. 'BCPBG Unl TL', "
-      "'VCPPG V3sn Unl', 'VCBCPBG V5sn Unl TL', 'PBG U1', 'VC2PPG V1s U2'; "
-      "or 'FEM' or 'CPD'.";
+      "Valid codes read '[VC|VC2][BC]<method> [V<n><b>] <points> [noBC] "
+      "[TL]' (Table 7.1) with <method> = PBG, PPG (= PPG1), PPG1 or PPG2, "
+      "the VC correction function V1, V3 or V5 (default V3 for PPG, V5 for "
+      "PBG, V1 for VC2) and its boundary option <b> = p, s or sn (default "
+      "sn; VC2 takes s), and <points> = Unl (default), U1 (PBG only) or U2. "
+      "The bond correction BC is the default of Unl; 'noBC' switches it "
+      "off. E.g. 'VCPPG V3sn Unl' (= 'VCBCPPG V3sn Unl TL'), 'VCPBG Unl' "
+      "(= 'VCBCPBG V5sn Unl TL'), 'PBG Unl noBC', 'PBG U1', "
+      "'VC2PPG V1s U2'; or 'FEM' or 'CPD'.";
 
 
 
@@ -34,6 +36,46 @@ namespace pg
     starts_with(const std::string &text, const std::string &prefix)
     {
       return text.compare(0, prefix.size(), prefix) == 0;
+    }
+
+
+
+    /**
+     * The code with every default written out. PPG2 under VC2 is written
+     * "VC2PPG", as the source does ("based on the PPG2 formulation").
+     */
+    std::string
+    resolved_text(const FormulationCode &code)
+    {
+      using Method = FormulationCode::Method;
+      if (code.method == Method::fem || code.method == Method::cpd)
+        return code.method_name();
+      std::string text = code.second_order_consistency ? "VC2" :
+                         code.variational_consistency  ? "VC" :
+                                                         "";
+      if (code.bond_correction)
+        text += "BC";
+      text += (code.method == Method::ppg2 && code.second_order_consistency ?
+                 std::string("PPG") :
+                 code.method_name());
+      if (code.variational_consistency)
+        {
+          using CF = FormulationCode::CorrectionFunction;
+          using B  = FormulationCode::VCBoundary;
+          text += std::string(" V") +
+                  (code.correction_function == CF::v1 ? "1" :
+                   code.correction_function == CF::v3 ? "3" :
+                                                        "5") +
+                  (code.vc_boundary == B::p ? "p" :
+                   code.vc_boundary == B::s ? "s" :
+                                              "sn");
+        }
+      text += (code.points == FormulationCode::Points::unl ? " Unl" :
+               code.points == FormulationCode::Points::u1  ? " U1" :
+                                                             " U2");
+      if (code.points == FormulationCode::Points::unl && !code.bond_correction)
+        text += " noBC";
+      return text + " TL";
     }
   } // namespace
 
@@ -61,6 +103,20 @@ namespace pg
 
 
 
+  std::string
+  FormulationCode::notice() const
+  {
+    if (!bond_correction_by_default)
+      return "";
+    return "Note: the formulation <" + written + "> is read as <" + text +
+           ">: Table 7.1 makes the bond correction BC the default of every "
+           "first-order formulation (pg read it without BC before December "
+           "2026); write <" +
+           written + " noBC> to switch BC off.";
+  }
+
+
+
   FormulationCode
   parse_formulation_code(const std::string &code)
   {
@@ -72,15 +128,17 @@ namespace pg
       reject(code, "it is empty.");
 
     FormulationCode result;
-    result.text.clear();
     for (const std::string &w : words)
-      result.text += (result.text.empty() ? "" : " ") + w;
-    result.bond_correction          = false;
-    result.points                   = FormulationCode::Points::unl;
-    result.variational_consistency  = false;
-    result.second_order_consistency = false;
-    result.vc_boundary              = FormulationCode::VCBoundary::sn;
-    bool have_correction_function   = false;
+      result.written += (result.written.empty() ? "" : " ") + w;
+    result.text                       = result.written;
+    result.bond_correction            = false;
+    result.bond_correction_by_default = false;
+    result.points                     = FormulationCode::Points::unl;
+    result.variational_consistency    = false;
+    result.second_order_consistency   = false;
+    result.vc_boundary                = FormulationCode::VCBoundary::sn;
+    result.correction_function        = FormulationCode::CorrectionFunction::v1;
+    bool have_correction_function     = false;
 
     // The first word: corrections, then the method.
     std::string head = words[0];
@@ -136,7 +194,7 @@ namespace pg
     else
       reject(code, "the method <" + head + "> is unknown.");
 
-    bool have_points = false, have_reference = false;
+    bool have_points = false, have_reference = false, no_bc = false;
     for (unsigned int i = 1; i < words.size(); ++i)
       {
         const std::string &w = words[i];
@@ -148,6 +206,14 @@ namespace pg
             result.points = (w == "Unl" ? FormulationCode::Points::unl :
                              w == "U1"  ? FormulationCode::Points::u1 :
                                           FormulationCode::Points::u2);
+          }
+        else if (w == "noBC")
+          {
+            if (no_bc)
+              reject(code, "noBC appears twice.");
+            if (result.bond_correction)
+              reject(code, "it asks for BC and noBC.");
+            no_bc = true;
           }
         else if (w == "TL")
           {
@@ -226,6 +292,28 @@ namespace pg
       reject(code,
              "U1 (one evaluation point per family) is the underintegrated "
              "PBG; use 'PBG U1'.");
+
+    // The bond correction (Table 7.1: "default for all first order
+    // formulations"). U1 evaluates at the master only, where the bond is
+    // zero and eq. (5.55) does nothing; U2 is second order, which BC would
+    // destroy (section 5.3.1). doc/ambiguities.md has the reading.
+    if (result.points == FormulationCode::Points::unl)
+      {
+        if (!result.bond_correction && !no_bc)
+          result.bond_correction_by_default = true;
+        result.bond_correction = !no_bc;
+      }
+    else if (result.bond_correction)
+      reject(code,
+             result.points == FormulationCode::Points::u1 ?
+               "BC acts on the bonds of the evaluation points (eq. 5.55, "
+               "j != k), and U1 has only the master, where the bond is "
+               "zero: BC would do nothing. Write the code without BC." :
+               "BC (eq. 5.55) keeps linear consistency only; on the "
+               "second-order U2 it destroys the quadratic consistency "
+               "that U2 is for. Write the code without BC.");
+
+    result.text = resolved_text(result);
     return result;
   }
 } // namespace pg

@@ -1,6 +1,7 @@
 #include <pg/postprocess/output.h>
 #include <pg/problem.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -60,6 +61,18 @@ namespace pg
 
   template <int dim>
   StressPostprocessor<dim>::StressPostprocessor(
+    const Materials::Material<dim>                            &material,
+    const std::vector<bool>                                   &meshfree_cell,
+    const std::function<const Tensor<2, dim> *(unsigned int)> &particle_F)
+    : material(material)
+    , meshfree_cell(meshfree_cell)
+    , particle_F(particle_F)
+  {}
+
+
+
+  template <int dim>
+  StressPostprocessor<dim>::StressPostprocessor(
     const Materials::Material<dim> &material)
     : material(material)
   {}
@@ -72,15 +85,35 @@ namespace pg
     const DataPostprocessorInputs::Vector<dim> &inputs,
     std::vector<Vector<double>>                &computed_quantities) const
   {
+    // On a meshfree cell: the particle at the vertex nearest each point
+    // (DataOut evaluates at the vertices when it does not subdivide).
+    const auto cell = inputs.template get_cell<dim>();
+    const bool from_particles =
+      particle_F && meshfree_cell[cell->active_cell_index()] &&
+      std::all_of(cell->vertex_indices().begin(),
+                  cell->vertex_indices().end(),
+                  [&](const unsigned int v) {
+                    return particle_F(cell->vertex_index(v)) != nullptr;
+                  });
     std::vector<double> values;
     for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
       {
         Tensor<2, dim> F;
-        for (unsigned int i = 0; i < dim; ++i)
+        if (from_particles)
           {
-            F[i] = inputs.solution_gradients[p][i];
-            F[i][i] += 1.;
+            unsigned int nearest = 0;
+            for (const unsigned int v : cell->vertex_indices())
+              if (cell->vertex(v).distance(inputs.evaluation_points[p]) <
+                  cell->vertex(nearest).distance(inputs.evaluation_points[p]))
+                nearest = v;
+            F = *particle_F(cell->vertex_index(nearest));
           }
+        else
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              F[i] = inputs.solution_gradients[p][i];
+              F[i][i] += 1.;
+            }
         stress_field_values(material, F, values);
         for (unsigned int c = 0; c < values.size(); ++c)
           computed_quantities[p][c] = values[c];
@@ -102,7 +135,7 @@ namespace pg
   UpdateFlags
   StressPostprocessor<dim>::get_needed_update_flags() const
   {
-    return update_gradients;
+    return update_gradients | update_quadrature_points;
   }
 
 

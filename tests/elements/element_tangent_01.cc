@@ -146,11 +146,11 @@ test()
             << ", rotation: " << verdict(worst[2], 1e-12) << std::endl;
   };
 
-  for (const std::string code : {"PBG Unl",
+  for (const std::string code : {"PBG Unl noBC",
                                  "BCPBG Unl",
-                                 "PPG Unl",
+                                 "PPG Unl noBC",
                                  "BCPPG Unl",
-                                 "PPG2 Unl",
+                                 "PPG2 Unl noBC",
                                  "BCPPG2 Unl",
                                  "PBG U1",
                                  "PBG U2",

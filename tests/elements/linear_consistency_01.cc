@@ -40,7 +40,9 @@ test()
       {
         FamilyElements<dim> elements(fixture.particles,
                                      fixture.families,
-                                     parse_formulation_code(bc + "PBG Unl"),
+                                     parse_formulation_code(bc.empty() ?
+                                                              "PBG Unl noBC" :
+                                                              "BCPBG Unl"),
                                      ShapeFunctions::parse_base(base),
                                      1.);
         elements.initialize();

@@ -28,8 +28,12 @@ test(const unsigned int cells, const double horizon_factor)
   deallog << dim << "d lattice " << cells << "^" << dim << ", horizon "
           << horizon_factor << " h" << std::endl;
 
-  for (const std::string code :
-       {"PBG Unl", "BCPBG Unl", "PPG Unl", "BCPPG Unl", "BCPPG2 Unl", "PBG U1"})
+  for (const std::string code : {"PBG Unl noBC",
+                                 "BCPBG Unl",
+                                 "PPG Unl noBC",
+                                 "BCPPG Unl",
+                                 "BCPPG2 Unl",
+                                 "PBG U1"})
     {
       FamilyElements<dim> elements(fixture.particles,
                                    fixture.families,

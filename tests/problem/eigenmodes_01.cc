@@ -35,7 +35,7 @@ main(int argc, char **argv)
                                  "VCPBG V3sn U1",
                                  "VCBCPBG V5sn Unl",
                                  "VCBCPPG V3sn Unl",
-                                 "VCPPG V3sn Unl"})
+                                 "VCPPG V3sn Unl noBC"})
     {
       const pg::RunSummary s =
         run_problem<2>(base +

@@ -89,13 +89,17 @@ main(int argc, char **argv)
 
   deallog << "2d uncorrected PG on a regular lattice (relative L2, H1 error):"
           << std::endl;
-  for (const std::string code :
-       {"PBG Unl", "BCPBG Unl", "PPG Unl", "BCPPG Unl", "BCPPG2 Unl", "PBG U1"})
+  for (const std::string code : {"PBG Unl noBC",
+                                 "BCPBG Unl",
+                                 "PPG Unl noBC",
+                                 "BCPPG Unl",
+                                 "BCPPG2 Unl",
+                                 "PBG U1"})
     {
       const pg::RunSummary s = run_problem<2>(parameters(2, code, 0.), screen);
       std::ostringstream   line;
       line << std::setprecision(4) << s.L2_relative << ", " << s.H1_relative;
-      deallog << "  " << std::left << std::setw(11) << code << std::right
+      deallog << "  " << std::left << std::setw(13) << code << std::right
               << line.str() << " (converged " << s.converged << ")"
               << std::endl;
     }
@@ -109,7 +113,7 @@ main(int argc, char **argv)
       dim == 2 ? run_problem<2>(parameters(2, code, 0.3, region), screen) :
                  run_problem<3>(parameters(3, code, 0.2, region), screen);
     const bool ok = s.L2_relative < 1e-11 && s.H1_relative < 1e-11;
-    deallog << "  " << dim << "d " << std::left << std::setw(18) << code
+    deallog << "  " << dim << "d " << std::left << std::setw(20) << code
             << std::right << (region == "all" ? "meshfree: " : "coupled:  ")
             << (ok ? "yes" : "NO") << std::endl;
     if (!ok)
@@ -118,7 +122,7 @@ main(int argc, char **argv)
   };
   deallog << "VC-corrected PG, distorted (exact to round-off):" << std::endl;
   for (const std::string code : {"VCBCPPG V3sn Unl",
-                                 "VCPPG V1sn Unl",
+                                 "VCPPG V1sn Unl noBC",
                                  "VCBCPPG2 V3sn Unl",
                                  "VCBCPBG V5sn Unl",
                                  "VCPBG V3sn U1"})
@@ -140,14 +144,14 @@ main(int argc, char **argv)
           << std::endl;
   for (const auto &[code, region] :
        std::vector<std::pair<std::string, std::string>>{
-         {"VCPPG V3sn Unl", "all"},
+         {"VCPPG V3sn Unl noBC", "all"},
          {"VCBCPPG2 V3sn Unl", "box 0, -1.1 : 1.1, 1.1"}})
     {
       const pg::RunSummary s =
         run_problem<2>(parameters(2, code, 0.3, region), screen);
       std::ostringstream line;
       line << std::setprecision(3) << s.L2_relative << ", " << s.H1_relative;
-      deallog << "  " << std::left << std::setw(18) << code << std::right
+      deallog << "  " << std::left << std::setw(20) << code << std::right
               << (region == "all" ? "meshfree: " : "coupled:  ") << line.str()
               << std::endl;
     }

@@ -9,10 +9,13 @@ namespace pg
 {
   /**
    * A formulation code of the dissertation (Table 7.1), e.g.
-   * "BCPBG Unl TL", parsed into its parts (architecture.md section 5).
-   * Parts that are not built yet (V2, V4, the mixed formulations, UL) are
-   * rejected with a "not yet available" message,
-   * never ignored.
+   * "VCPBG Unl", parsed into its parts (architecture.md section 5) with the
+   * table's defaults: BC for every first-order formulation (Unl; U1 has no
+   * bond to correct, U2 is second order), V3 for PPG, V5 for PBG, the
+   * boundary option sn, TL. "noBC" switches the bond correction off. Parts
+   * that are not built yet (V2, V4, the mixed formulations, UL) are
+   * rejected with a "not yet available" message, never ignored. The
+   * readings where the table is silent are in doc/ambiguities.md.
    */
   struct FormulationCode
   {
@@ -63,8 +66,29 @@ namespace pg
     VCBoundary         vc_boundary;
     /** Bond correction (eq. 5.55) of the trial functions. */
     bool bond_correction;
+    /**
+     * True if the bond correction is on only because Table 7.1 makes it the
+     * default of every first-order formulation (Unl): the user wrote
+     * neither "BC" nor "noBC". Such a code meant "without BC" before pg
+     * followed the table, hence the notice of notice().
+     */
+    bool bond_correction_by_default;
     /** The code as the user wrote it, normalised to single spaces. */
+    std::string written;
+    /**
+     * The resolved code with every default written out, e.g.
+     * "VCBCPPG V3sn Unl TL" for the user's "VCPPG Unl"; "PBG Unl noBC TL"
+     * when the bond correction is switched off. Parsing it again gives the
+     * same formulation.
+     */
     std::string text;
+
+    /**
+     * A one-line notice if the code relies on a default that changed its
+     * meaning (the bond correction of Table 7.1), else an empty string.
+     */
+    std::string
+    notice() const;
 
     /** "PBG", "PPG", "PPG2", "CPD" or "FEM". */
     std::string

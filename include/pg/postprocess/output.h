@@ -7,6 +7,7 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,13 +32,30 @@ namespace pg
                       std::vector<double>            &values);
 
   /**
-   * DataPostprocessor for Q1 cells: deformation gradient, Cauchy stress
-   * and von Mises stress from the displacement gradient.
+   * DataPostprocessor for the cells: deformation gradient, Cauchy stress
+   * and von Mises stress. On finite element cells they come from the Q1
+   * displacement gradient. On meshfree cells (if @p particle_F is given)
+   * they are the particles' own values, F at the master point of each
+   * family, at the cell's vertices, which ParaView interpolates linearly:
+   * the PG solution, not the Q1 gradient of the particle displacements
+   * (which is not what PG computes and shows a checkerboard).
    */
   template <int dim>
   class StressPostprocessor : public DataPostprocessor<dim>
   {
   public:
+    /**
+     * @p particle_F(v) is the deformation gradient of the particle at
+     * vertex v, or nullptr if vertex v is no particle; cells all of whose
+     * vertices are particles and that are flagged in @p meshfree_cell
+     * (indexed by active cell index) take those values.
+     */
+    StressPostprocessor(
+      const Materials::Material<dim>                            &material,
+      const std::vector<bool>                                   &meshfree_cell,
+      const std::function<const Tensor<2, dim> *(unsigned int)> &particle_F);
+
+    /** The Q1 gradient on every cell. */
     explicit StressPostprocessor(const Materials::Material<dim> &material);
 
     void
@@ -52,7 +70,9 @@ namespace pg
     get_needed_update_flags() const override;
 
   private:
-    const Materials::Material<dim> &material;
+    const Materials::Material<dim>                           &material;
+    const std::vector<bool>                                   meshfree_cell;
+    const std::function<const Tensor<2, dim> *(unsigned int)> particle_F;
   };
 
   /**

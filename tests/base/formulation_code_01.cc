@@ -1,0 +1,84 @@
+// Formulation codes mean what the dissertation's Table 7.1 says, defaults
+// included (issue 11, item 1): BC is the default of every first-order
+// formulation (Unl), V3 of PPG, V5 of PBG, sn and TL. Printed for each
+// code: the resolved code (which must parse to itself), the bond
+// correction, and whether the one-line notice of a changed default is
+// given. Then the codes that must be refused, with their reasons.
+
+#include <pg/base/formulation_code.h>
+
+#include "../tests.h"
+
+using namespace pg;
+
+int
+main()
+{
+  initlog();
+  for (const std::string code : {"PPG Unl",
+                                 "PBG Unl",
+                                 "PPG2 Unl",
+                                 "VCPPG Unl",
+                                 "VCPBG Unl",
+                                 "VCPPG V3sn Unl",
+                                 "VCPBG V5sn Unl TL",
+                                 "VCPPG V1s Unl",
+                                 "VCPBG V3p Unl",
+                                 "BCPBG Unl TL",
+                                 "VCBCPPG V3sn Unl",
+                                 "PBG Unl noBC",
+                                 "VCPPG V3sn Unl noBC",
+                                 "VC2PPG V1s Unl",
+                                 "VC2PPG U2",
+                                 "VC2PPG V1s U2",
+                                 "PPG2 U2",
+                                 "PBG U2",
+                                 "PBG U1",
+                                 "VCPBG U1",
+                                 "PBG U1 noBC",
+                                 "PBG",
+                                 "FEM",
+                                 "CPD"})
+    {
+      const FormulationCode f     = parse_formulation_code(code);
+      const FormulationCode again = parse_formulation_code(f.text);
+      const bool            same =
+        again.text == f.text && again.bond_correction == f.bond_correction &&
+        again.method == f.method && again.points == f.points &&
+        again.variational_consistency == f.variational_consistency &&
+        again.correction_function == f.correction_function &&
+        again.vc_boundary == f.vc_boundary && !again.bond_correction_by_default;
+      deallog << std::left << std::setw(20) << code << " -> " << std::setw(22)
+              << f.text << " BC " << (f.bond_correction ? "on " : "off")
+              << (f.notice().empty() ? "" : ", notice")
+              << (same ? "" : ", RESOLVED CODE PARSES DIFFERENTLY")
+              << std::endl;
+    }
+
+  deallog << "Refused:" << std::endl;
+  for (const std::string code : {"BCPBG U1",
+                                 "BCPBG U2",
+                                 "BCPBG Unl noBC",
+                                 "PBG Unl noBC noBC",
+                                 "BCBCPBG Unl",
+                                 "VCPBG V2sn Unl",
+                                 "PBG V5sn Unl",
+                                 "VC2PPG V1sn U2",
+                                 "PPG U1",
+                                 "VCPPG Unl UL",
+                                 "PBG Unl U2",
+                                 "XPBG Unl"})
+    try
+      {
+        parse_formulation_code(code);
+        deallog << "  " << code << ": ACCEPTED" << std::endl;
+      }
+    catch (const ExceptionBase &e)
+      {
+        // the reason, without the list of valid codes that follows it
+        std::string reason = exception_message(e);
+        reason             = reason.substr(reason.find(">: ") + 3);
+        reason             = reason.substr(0, reason.find(" Valid codes"));
+        deallog << "  " << code << ": " << reason << std::endl;
+      }
+}
