@@ -112,6 +112,13 @@ namespace pg
                const unsigned int                         point,
                const unsigned int                         a) const;
 
+    /**
+     * The correction function of family @p k: the formulation's, except V1
+     * for PPG masters on the FE/meshfree interface (see the definition).
+     */
+    FormulationCode::CorrectionFunction
+    family_correction_function(const unsigned int k) const;
+
     /** The bond projector 1 - n (x) n of V5 at @p point (1 otherwise). */
     Tensor<2, dim>
     projector(const ShapeFunctions::FamilyGeometry<dim> &geometry,
