@@ -100,6 +100,13 @@ namespace pg
     /** Moment matrices with a larger condition number are rejected. */
     static constexpr double maximum_condition_number = 1e10;
 
+    /**
+     * The correction function of family @p k: the formulation's, except V1
+     * for PPG masters on the FE/meshfree interface (see the definition).
+     */
+    FormulationCode::CorrectionFunction
+    family_correction_function(const unsigned int k) const;
+
   private:
     /**
      * The VC correction of a gradient of family @p k at member @p point for
@@ -111,13 +118,6 @@ namespace pg
                const ShapeFunctions::FamilyGeometry<dim> &geometry,
                const unsigned int                         point,
                const unsigned int                         a) const;
-
-    /**
-     * The correction function of family @p k: the formulation's, except V1
-     * for PPG masters on the FE/meshfree interface (see the definition).
-     */
-    FormulationCode::CorrectionFunction
-    family_correction_function(const unsigned int k) const;
 
     /** The bond projector 1 - n (x) n of V5 at @p point (1 otherwise). */
     Tensor<2, dim>
