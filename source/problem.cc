@@ -705,6 +705,16 @@ namespace pg
            << summary.max_correction_factor;
         pcout << "  VC correction:   interior |d^k|/h^(dim-1) <= " << vc.str()
               << "\n";
+        unsigned int n_v1 = 0;
+        for (unsigned int k = 0; k < particles.n_particles(); ++k)
+          n_v1 += (family_elements->family_correction_function(k) ==
+                     FormulationCode::CorrectionFunction::v1 &&
+                   formulation.correction_function !=
+                     FormulationCode::CorrectionFunction::v1);
+        if (n_v1 > 0)
+          pcout << "  VC on the FE/meshfree interface: V1 in the " << n_v1
+                << " families of interface particles (doc/ambiguities.md, "
+                   "item 17)\n";
         if (formulation.second_order_consistency)
           {
             std::ostringstream vc2;
@@ -1157,9 +1167,17 @@ namespace pg
           return r.norm();
         };
         // PPG2 test functions keep only sum_k d^k = 0 (section 11.4): its
-        // nullity is d, so one particle is fixed.
-        const unsigned int n_fixed =
-          (formulation.method == FormulationCode::Method::ppg2 ? 1 : dim + 1);
+        // nullity is d, so one particle is fixed. So is a V1 correction
+        // anywhere (PPG interface masters use V1, family_elements.cc):
+        // V1 does not preserve first-order consistency, so
+        // sum_k X^k (x) d^k depends on alpha.
+        bool first_order_identity =
+          formulation.method != FormulationCode::Method::ppg2;
+        for (unsigned int k = 0; k < n; ++k)
+          if (family_elements->family_correction_function(k) ==
+              FormulationCode::CorrectionFunction::v1)
+            first_order_identity = false;
+        const unsigned int n_fixed = (first_order_identity ? dim + 1 : 1);
         while (chosen.size() < n_fixed)
           {
             unsigned int best = surface[0];

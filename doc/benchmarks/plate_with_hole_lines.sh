@@ -8,7 +8,7 @@ set -e
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 pg_solve=${1:-$root/build/applications/pg_solve/pg_solve}
-refinement=${2:-3}
+refinement=${2:-4}
 work=$(mktemp -d)
 for case in "FEM:FEM" "coupled-VCBCPPG:VCBCPPG V3sn Unl" "coupled-BCPPG:BCPPG Unl"; do
   name=${case%%:*}

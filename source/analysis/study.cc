@@ -338,12 +338,12 @@ namespace pg
               block << series_label(key) << "\n"
                     << "  level   DoFs      L2  rate   energy  rate"
                     << (with_stress ? "  " + stress_name + " error" : "")
-                    << "\n";
+                    << "  interface jump\n";
               std::ofstream data(dir + series_file(key));
               data << "# " << series_label(key) << "\n"
                    << "# level n_dofs L2_relative H1_relative "
                       "energy_relative stress_error solution_seconds "
-                      "seconds_per_newton_step\n"
+                      "seconds_per_newton_step interface_jump\n"
                    << std::setprecision(8);
               for (unsigned int i = 0; i < list.size(); ++i)
                 {
@@ -367,13 +367,15 @@ namespace pg
                         << rate_L2 << "  " << scientific(s.energy_relative)
                         << " " << std::setw(5) << rate_energy;
                   if (with_stress)
-                    block << "  " << scientific(list[i]->stress_error);
-                  block << "\n";
+                    block << "  " << std::setw(stress_name.size() + 6)
+                          << scientific(list[i]->stress_error);
+                  block << "  " << scientific(s.max_interface_stress_jump)
+                        << "\n";
                   data << list[i]->level << " " << s.n_dofs << " "
                        << s.L2_relative << " " << s.H1_relative << " "
                        << s.energy_relative << " " << list[i]->stress_error
-                       << " " << solution_time(s) << " " << step_time(s)
-                       << "\n";
+                       << " " << solution_time(s) << " " << step_time(s) << " "
+                       << s.max_interface_stress_jump << "\n";
 
                   const auto &c = s.assembly_cost;
                   table.add_value("configuration",
@@ -392,6 +394,8 @@ namespace pg
                   table.add_value("rate energy", rate_energy);
                   if (with_stress)
                     table.add_value("stress error", list[i]->stress_error);
+                  table.add_value("interface jump",
+                                  s.max_interface_stress_jump);
                   for (const char *phase : {"mesh",
                                             "setup",
                                             "shape_functions",
@@ -440,6 +444,8 @@ namespace pg
               table.set_scientific(column, true);
               table.set_precision(column, 2);
             }
+          table.set_scientific("interface jump", true);
+          table.set_precision("interface jump", 2);
           if (with_stress)
             {
               table.set_scientific("stress error", true);

@@ -88,9 +88,33 @@ namespace pg
         phi.resize(families.n_families());
         for (unsigned int k = 0; k < families.n_families(); ++k)
           phi[k] =
-            ShapeFunctions::correction_function(formulation.correction_function,
+            ShapeFunctions::correction_function(family_correction_function(k),
                                                 geometry(k));
       }
+  }
+
+
+
+  template <int dim>
+  FormulationCode::CorrectionFunction
+  FamilyElements<dim>::family_correction_function(const unsigned int k) const
+  {
+    // PPG corrects only its test functions, which need no consistency
+    // (section 5.3.2), so the correction function is free there. With V3
+    // (V2, V4, V5: an MLS fit evaluated at the master) on the one-sided
+    // families of interface masters, the VC system is nearly singular
+    // where the FE/meshfree interface meets a surface with option sn: on
+    // the plate with a hole, particles to 3R, max |alpha^k| h is 89 at
+    // refinement 4 and 330 at 5 at that corner, against 2 elsewhere, and
+    // the energy error does not converge. The constant V1 at interface
+    // masters keeps max |alpha^k| h below 2 (doc/ambiguities.md). PBG
+    // corrects its trial functions too, which V1 would make inconsistent:
+    // it keeps the chosen function.
+    if (particles.on_interface(k) &&
+        (formulation.method == FormulationCode::Method::ppg1 ||
+         formulation.method == FormulationCode::Method::ppg2))
+      return FormulationCode::CorrectionFunction::v1;
+    return formulation.correction_function;
   }
 
 

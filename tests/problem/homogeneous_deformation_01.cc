@@ -127,25 +127,29 @@ main(int argc, char **argv)
                                  "VCBCPBG V5sn Unl",
                                  "VCPBG V3sn U1"})
     exact(2, code, "all");
-  for (const std::string code :
-       {"VCBCPPG V3sn Unl", "VCBCPBG V5sn Unl", "VCPBG V3sn U1"})
+  for (const std::string code : {"VCBCPPG V3sn Unl",
+                                 "VCBCPPG2 V3sn Unl",
+                                 "VCBCPBG V5sn Unl",
+                                 "VCPBG V3sn U1"})
     exact(2, code, "box 0, -1.1 : 1.1, 1.1");
   exact(3, "VCBCPPG V3sn Unl", "all");
   exact(3, "VCBCPBG V5sn Unl", "all");
 
-  // Findings, printed as numbers: these PPG variants pass the linear patch
-  // test (linear_patch_test_01) and converge quadratically here, but to a
+  // Finding, printed as numbers: this PPG variant passes the linear patch
+  // test (linear_patch_test_01) and converges quadratically here, but to a
   // second discrete equilibrium next to the exact one (the exact state is
   // an equilibrium too: trial functions linearly consistent, d^k = 0).
   // Without the bond correction the MTE1 trial functions do not map the
-  // bonds, the instability BC is meant to remove (sections 9.3, 13.5); the
-  // coupled PPG2 case is not understood yet.
+  // bonds, the instability BC is meant to remove (sections 9.3, 13.5).
+  // Coupled VCBCPPG2 V3sn Unl had such an equilibrium too (0.0876, 0.204)
+  // while its interface masters used V3, whose VC system is nearly
+  // singular where the interface meets the sn surface (max |alpha| h
+  // large); with V1 there (doc/ambiguities.md #17) it is exact, above.
   deallog << "PPG under finite strain, spurious equilibria (relative L2, H1):"
           << std::endl;
   for (const auto &[code, region] :
        std::vector<std::pair<std::string, std::string>>{
-         {"VCPPG V3sn Unl noBC", "all"},
-         {"VCBCPPG2 V3sn Unl", "box 0, -1.1 : 1.1, 1.1"}})
+         {"VCPPG V3sn Unl noBC", "all"}})
     {
       const pg::RunSummary s =
         run_problem<2>(parameters(2, code, 0.3, region), screen);

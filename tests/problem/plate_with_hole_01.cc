@@ -4,7 +4,7 @@
 //
 // 1. VCBCPPG V3sn Unl converges: least-squares rates in L2 and H1 against
 //    the number of DoFs (rate in h = -2 x slope in n_dofs) of at least 1.5
-//    and 1.0 (measured 1.7 and 1.5; FEM alone gives 2.0 and 1.0 here).
+//    and 1.0 (measured 1.8 and 1.4; FEM alone gives 2.0 and 1.0 here).
 // 2. The FE/PG interface adds no spurious stress jump: the largest
 //    difference of sigma_xx between the particle value and the average of
 //    the adjacent Q1 cells at interface vertices, relative to 3T = 30,

@@ -100,6 +100,13 @@ namespace pg
     /** Moment matrices with a larger condition number are rejected. */
     static constexpr double maximum_condition_number = 1e10;
 
+    /**
+     * The correction function of family @p k: the formulation's, except V1
+     * for PPG masters on the FE/meshfree interface (see the definition).
+     */
+    FormulationCode::CorrectionFunction
+    family_correction_function(const unsigned int k) const;
+
   private:
     /**
      * The VC correction of a gradient of family @p k at member @p point for
