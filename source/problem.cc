@@ -279,6 +279,8 @@ namespace pg
      * make_constraints(), which dynamics calls every step.
      */
     double mesh_diameter = 0;
+    /** What create_mesh() did to a mesh file, for the banner. */
+    std::string mesh_notes;
 
     const Parameters::AllParameters<dim> &prm;
     /** prm.geometry, replaced per mesh by the inf-sup analysis. */
@@ -371,6 +373,8 @@ namespace pg
 
     std::mutex  failure_mutex;
     std::string failure;
+    /** Why the last failed (sub)step failed, for the final message. */
+    std::string last_failure;
 
     RunSummary                                  summary;
     TableHandler                                statistics;
@@ -427,7 +431,7 @@ namespace pg
   Problem<dim>::Implementation::setup()
   {
     Timer timer;
-    Mesh::create_mesh(geometry, triangulation);
+    Mesh::create_mesh(geometry, triangulation, &mesh_notes);
     time_mesh += timer.wall_time();
     timer.restart();
     const bool fem = (formulation.method == FormulationCode::Method::fem);
@@ -473,7 +477,8 @@ namespace pg
         families.reinit(particles,
                         prm.discretization.horizon_factor +
                           (is_cpd && prm.cpd.partial_volumes ? 0.5 : 0.),
-                        prm.discretization.nearest_neighbours);
+                        prm.discretization.nearest_neighbours,
+                        prm.discretization.horizon);
         summary.n_families = families.n_families();
         if (is_cpd)
           cpd = std::make_unique<CpdInteractions<dim>>(
@@ -483,7 +488,8 @@ namespace pg
                          prm.cpd.C2,
                          prm.cpd.C3,
                          prm.cpd.partial_volumes},
-            prm.discretization.horizon_factor);
+            prm.discretization.horizon_factor,
+            prm.discretization.horizon);
         family_elements = std::make_unique<FamilyElements<dim>>(
           particles,
           families,
@@ -661,7 +667,11 @@ namespace pg
           << "  cells:           " << triangulation.n_active_cells() << " ("
           << summary.n_fe_cells << " finite elements, "
           << summary.n_meshfree_cells << " meshfree)\n"
-          << "  particles:       " << particles.n_particles() << "\n";
+          << mesh_notes << "  particles:       " << particles.n_particles()
+          << "\n";
+    if (families.n_families() > 0 && prm.discretization.horizon > 0)
+      pcout << "  horizon:         " << prm.discretization.horizon
+            << " (absolute)\n";
     if (families.n_families() > 0)
       {
         std::ostringstream mean;
@@ -780,9 +790,26 @@ namespace pg
               continue;
             c.add_line(dof);
             if (!homogeneous)
-              c.set_inhomogeneity(
-                dof,
-                prm.prescribed_displacement.value(object->vertex(v), comp));
+              {
+                const double value =
+                  prm.prescribed_displacement.value(object->vertex(v), comp);
+                if (!std::isfinite(value))
+                  {
+                    std::ostringstream where;
+                    where << object->vertex(v);
+                    AssertThrow(
+                      false,
+                      ExcMessage(
+                        "The 'Prescribed displacement' function "
+                        "of subsection 'Boundary conditions' is "
+                        "NaN or inf at (" +
+                        where.str() + "), component " +
+                        std::string(1, "xyz"[comp]) + ", load factor " +
+                        std::to_string(prm.prescribed_displacement.get_time()) +
+                        "."));
+                  }
+                c.set_inhomogeneity(dof, value);
+              }
           }
     };
 
@@ -1247,7 +1274,10 @@ namespace pg
     AssertThrow(corrections < 50,
                 ExcMessage("The VC system could not be solved: change "
                            "the VC boundary option of 'Formulation' in "
-                           "subsection 'Discretization' (p, s or sn)."));
+                           "subsection 'Discretization' (p, s or sn), or "
+                           "check for coincident particles (unmerged mesh "
+                           "vertices: 'Coincident vertices' in subsection "
+                           "'Geometry')."));
     LinearAlgebra::Vector ghosted(owned_dofs, relevant_dofs, comm);
     ghosted = update;
     std::vector<Tensor<1, dim>> alpha(n);
@@ -1420,6 +1450,39 @@ namespace pg
 
 
 
+  namespace
+  {
+    /** Whether a local vector (and matrix) has only finite entries. */
+    bool
+    all_finite(const Vector<double> &v, const FullMatrix<double> *m)
+    {
+      for (const double x : v)
+        if (!std::isfinite(x))
+          return false;
+      if (m != nullptr)
+        for (unsigned int i = 0; i < m->m(); ++i)
+          for (unsigned int j = 0; j < m->n(); ++j)
+            if (!std::isfinite((*m)(i, j)))
+              return false;
+      return true;
+    }
+
+    /** The message for a NaN or inf in an element's residual or tangent. */
+    template <int dim>
+    std::string
+    non_finite_message(const std::string &element,
+                       const Point<dim>  &where,
+                       const std::string &hint)
+    {
+      std::ostringstream s;
+      s << "NaN or inf in the residual or tangent of " << element << " at ("
+        << where << "). " << hint;
+      return s.str();
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   Problem<dim>::Implementation::assemble(const bool with_matrix)
@@ -1450,9 +1513,18 @@ namespace pg
       force.add(copy.dofs, copy.residual);
     };
     const auto record_failure = [&](const std::exception &e) {
+      // a deal.II exception's own message, without the source location
+      std::string       message = e.what();
+      const auto *const exc     = dynamic_cast<const ExceptionBase *>(&e);
+      if (exc != nullptr)
+        {
+          std::ostringstream info;
+          exc->print_info(info);
+          message = Utilities::trim(info.str());
+        }
       std::lock_guard<std::mutex> lock(failure_mutex);
       if (failure.empty())
-        failure = e.what();
+        failure = message;
     };
 
     Timer loop_timer;
@@ -1499,6 +1571,14 @@ namespace pg
                         scratch.fe_values.JxW(q);
                 }
             add_face_tractions(cell, scratch.fe_face_values, copy.residual);
+            if (!all_finite(copy.residual,
+                            with_matrix ? &copy.matrix : nullptr))
+              throw std::runtime_error(non_finite_message(
+                "Q1 cell " + std::to_string(cell->active_cell_index()),
+                cell->center(),
+                "Check the 'Traction', 'Body force' and 'Prescribed "
+                "displacement' functions, the material, and the cell "
+                "(degenerate or inverted)."));
           }
         catch (const std::exception &e)
           {
@@ -1553,6 +1633,14 @@ namespace pg
                                *material,
                                copy.residual,
                                with_matrix ? &copy.matrix : nullptr);
+            if (!all_finite(copy.residual,
+                            with_matrix ? &copy.matrix : nullptr))
+              throw std::runtime_error(non_finite_message(
+                "the family of particle " + std::to_string(k),
+                particles.position(k),
+                "Coincident particles (e.g. unmerged mesh vertices), an "
+                "empty or degenerate family, or a NaN in the prescribed "
+                "displacement make it."));
           }
         catch (const std::exception &e)
           {
@@ -1610,6 +1698,12 @@ namespace pg
                 for (unsigned int c = 0; c < dim; ++c)
                   local(c) += a * t[c];
               }
+        if (!all_finite(local, nullptr) && failure.empty())
+          failure =
+            non_finite_message("the load of particle " + std::to_string(k),
+                               particles.position(k),
+                               "Check the 'Traction' and 'Body "
+                               "force' functions.");
         for (unsigned int c = 0; c < dim; ++c)
           dofs[c] = particles.dof(k, c);
         zero_constraints.distribute_local_to_global(local, dofs, rhs);
@@ -1627,6 +1721,12 @@ namespace pg
           copy.residual.reinit(copy.dofs.size());
           copy.with_matrix = false;
           add_face_tractions(cell, scratch.fe_face_values, copy.residual);
+          if (!all_finite(copy.residual, nullptr) && failure.empty())
+            failure =
+              non_finite_message("the traction on meshfree cell " +
+                                   std::to_string(cell->active_cell_index()),
+                                 cell->center(),
+                                 "Check the 'Traction' function.");
           copier(copy);
         }
     }
@@ -1635,6 +1735,10 @@ namespace pg
       matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
     force.compress(VectorOperation::add);
+    if (failure.empty() && !std::isfinite(rhs.l2_norm()))
+      failure = "NaN or inf in the assembled residual (none in the "
+                "elements' own contributions: check the constraints and "
+                "'Prescribed displacement').";
     time_assembly += timer.wall_time();
   }
 
@@ -1649,6 +1753,7 @@ namespace pg
     make_constraints(constraints, false);
     constraints.distribute(solution_owned);
     update_full_solution();
+    last_failure.clear();
 
     summary.newton_residuals_last_step.clear();
     double             first = 0;
@@ -1662,8 +1767,10 @@ namespace pg
           Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0;
         if (failed)
           {
+            last_failure =
+              failure.empty() ? "the assembly failed on another rank" : failure;
             pcout << "    assembly failed"
-                  << (failure.empty() ? "" : ": " + failure.substr(0, 200))
+                  << (failure.empty() ? "" : ": " + failure.substr(0, 400))
                   << std::endl;
             return false;
           }
@@ -1671,9 +1778,15 @@ namespace pg
         summary.newton_residuals_last_step.push_back(residual);
         if (it == 0)
           first = residual;
-        line << " " << (first > 0 ? residual / first : 0.);
         if (!std::isfinite(residual))
-          break;
+          {
+            // never print a NaN residual as a ratio 0
+            line << " " << residual;
+            last_failure = "the Newton residual is not finite (|R| = " +
+                           std::to_string(residual) + ")";
+            break;
+          }
+        line << " " << (first > 0 ? residual / first : 0.);
         if (residual <= prm.newton.absolute_tolerance ||
             residual <= prm.newton.relative_tolerance * first)
           {
@@ -2128,6 +2241,35 @@ namespace pg
         Utilities::MPI::sum(reaction, comm, reaction);
         summary.reactions[id] = reaction;
       }
+    // The same for 'Dirichlet boxes': the vertices in each box, as in
+    // make_constraints().
+    summary.box_reactions.clear();
+    const double box_tolerance = 1e-10 * mesh_diameter;
+    for (const auto &box : prm.boundary_conditions.dirichlet_boxes)
+      {
+        std::vector<bool>   counted(dof_handler.n_dofs(), false);
+        std::vector<double> reaction(dim, 0.);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              bool inside = true;
+              for (unsigned int d = 0; d < dim; ++d)
+                inside = inside &&
+                         cell->vertex(v)[d] >= box.lower[d] - box_tolerance &&
+                         cell->vertex(v)[d] <= box.upper[d] + box_tolerance;
+              if (inside)
+                for (unsigned int c = 0; c < dim; ++c)
+                  if (box.components[c])
+                    {
+                      const auto dof = cell->vertex_dof_index(v, c);
+                      if (!counted[dof] && owned_dofs.is_element(dof))
+                        reaction[c] += force[dof];
+                      counted[dof] = true;
+                    }
+            }
+        Utilities::MPI::sum(reaction, comm, reaction);
+        summary.box_reactions.push_back(reaction);
+      }
 
     if (prm.compute_errors)
       {
@@ -2580,18 +2722,26 @@ namespace pg
               {
                 summary.converged = false;
                 write_files(step, t);
-                AssertThrow(false,
-                            ExcMessage(
-                              "Load step " + std::to_string(step) +
-                              " did not converge after " +
-                              std::to_string(prm.loading.maximum_step_cuts) +
-                              " step cuts (last load factor reached: " +
-                              std::to_string(t) +
-                              "). Increase 'Load steps' or 'Maximum step "
-                              "cuts' in subsection 'Loading', or 'Maximum "
-                              "iterations' in subsection 'Newton'. The "
-                              "results of the converged steps are in '" +
-                              prm.output.directory + "'."));
+                AssertThrow(
+                  false,
+                  ExcMessage(
+                    "Load step " + std::to_string(step) +
+                    " did not converge after " +
+                    std::to_string(prm.loading.maximum_step_cuts) +
+                    " step cuts (last load factor reached: " +
+                    std::to_string(t) + "). " +
+                    (last_failure.empty() ?
+                       std::string() :
+                       "The last attempt ended with: " + last_failure + " ") +
+                    // smaller steps do not cure a NaN in the input
+                    (last_failure.find("NaN or inf") != std::string::npos ?
+                       std::string() :
+                       "Increase 'Load steps' or 'Maximum step "
+                       "cuts' in subsection 'Loading', or "
+                       "'Maximum iterations' in subsection "
+                       "'Newton'. ") +
+                    "The results of the converged steps are in '" +
+                    prm.output.directory + "'."));
               }
             dt /= 2;
             pcout << "    cutting the step to dt = " << dt << std::endl;
@@ -2647,6 +2797,13 @@ namespace pg
       {
         pcout << "  reaction on boundary " << static_cast<int>(id) << ":";
         for (const double v : r)
+          pcout << " " << (std::abs(v) < 1e-9 ? 0. : v);
+        pcout << std::endl;
+      }
+    for (unsigned int b = 0; b < summary.box_reactions.size(); ++b)
+      {
+        pcout << "  reaction on Dirichlet box " << b + 1 << ":";
+        for (const double v : summary.box_reactions[b])
           pcout << " " << (std::abs(v) < 1e-9 ? 0. : v);
         pcout << std::endl;
       }
@@ -2852,8 +3009,10 @@ namespace pg
         assemble(true);
         if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0)
           {
+            last_failure =
+              failure.empty() ? "the assembly failed on another rank" : failure;
             pcout << "    assembly failed"
-                  << (failure.empty() ? "" : ": " + failure.substr(0, 200))
+                  << (failure.empty() ? "" : ": " + failure.substr(0, 400))
                   << std::endl;
             return false;
           }
@@ -2868,9 +3027,14 @@ namespace pg
         summary.newton_residuals_last_step.push_back(residual);
         if (it == 0)
           reference = std::max({residual, static_norm, Ma.l2_norm()});
-        line << " " << (reference > 0 ? residual / reference : 0.);
         if (!std::isfinite(residual))
-          break;
+          {
+            line << " " << residual;
+            last_failure = "the Newton residual is not finite (|R| = " +
+                           std::to_string(residual) + ")";
+            break;
+          }
+        line << " " << (reference > 0 ? residual / reference : 0.);
         if (residual <= prm.newton.absolute_tolerance ||
             residual <= prm.newton.relative_tolerance * reference)
           {

@@ -47,7 +47,13 @@ namespace pg
     std::vector<LineSample> line_samples;
     /** Dirichlet boundary id -> reaction force (f_int - f_ext). */
     std::map<types::boundary_id, std::vector<double>> reactions;
-    bool                                              have_errors = false;
+    /**
+     * The reaction (f_int - f_ext, dim components) of each of 'Dirichlet
+     * boxes', in their order: summed over the prescribed components of the
+     * vertices in the box (a vertex in two boxes counts for both).
+     */
+    std::vector<std::vector<double>> box_reactions;
+    bool                             have_errors = false;
     double L2 = 0, H1 = 0, L2_relative = 0, H1_relative = 0;
     /**
      * Energy norm of the error, sqrt(int grad e : A(1) : grad e) with the

@@ -689,7 +689,9 @@ namespace pg
                       prm.leave_subsection();
                       prm.enter_subsection("Discretization");
                       prm.set("Formulation", configuration.formulation);
-                      prm.set("Horizon factor", horizon);
+                      // 0: the base file gives an absolute 'Horizon'
+                      if (horizon > 0)
+                        prm.set("Horizon factor", horizon);
                       prm.leave_subsection();
                       prm.enter_subsection("Output");
                       prm.set("Directory", run_directory);

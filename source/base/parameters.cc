@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -198,6 +199,21 @@ namespace pg
                           "Mesh file for 'Mesh = file': Gmsh (.msh), Abaqus "
                           "(.inp) or UCD (.ucd), read with deal.II's GridIn. "
                           "Relative paths start in the working directory.");
+        prm.declare_entry(
+          "Coincident vertices",
+          "merge",
+          Patterns::Selection("merge|reject|keep"),
+          "Mesh = file: what to do with distinct vertices at the same "
+          "position (closer than 1e-10 x the bounding-box diagonal in every "
+          "coordinate), which some mesh generators leave where blocks meet "
+          "(e.g. Cubit/Exodus meshes converted to Gmsh): they disconnect "
+          "the finite elements there and make coincident particles. "
+          "'merge': merge them into one vertex on reading and say how many "
+          "were merged. 'reject': stop with a message naming the first "
+          "positions. 'keep': read the mesh as it is and only say so (the "
+          "blocks stay disconnected: FEM then has a singular system and "
+          "PG coincident particles, whose families give NaN; for tests "
+          "of those messages).");
         prm.declare_entry("Global refinement",
                           "0",
                           Patterns::Integer(0, 12),
@@ -244,14 +260,15 @@ namespace pg
         for (const double s :
              parse_doubles(prm.get("Subdivisions"), "Geometry/Subdivisions"))
           subdivisions.push_back(static_cast<unsigned int>(s));
-        plate_size        = prm.get_double("Plate size");
-        hole_radius       = prm.get_double("Hole radius");
-        file_name         = prm.get("File name");
-        global_refinement = prm.get_integer("Global refinement");
-        distortion        = prm.get_double("Distortion");
-        random_seed       = prm.get_integer("Random seed");
-        meshfree_region   = prm.get("Meshfree region");
-        hole              = prm.get("Hole");
+        plate_size          = prm.get_double("Plate size");
+        hole_radius         = prm.get_double("Hole radius");
+        file_name           = prm.get("File name");
+        coincident_vertices = prm.get("Coincident vertices");
+        global_refinement   = prm.get_integer("Global refinement");
+        distortion          = prm.get_double("Distortion");
+        random_seed         = prm.get_integer("Random seed");
+        meshfree_region     = prm.get("Meshfree region");
+        hole                = prm.get("Hole");
       }
       prm.leave_subsection();
 
@@ -309,18 +326,32 @@ namespace pg
                           "WLS1 (weighted least squares), WTE1 (weighted "
                           "Taylor). At the master MTE1 equals WTE1, so U1 "
                           "with MTE1 is WTE1: classical correspondence.");
-        prm.declare_entry("Horizon factor",
-                          "2.51",
-                          Patterns::Double(0.),
-                          "Horizon delta = factor x local particle spacing "
-                          "(mean length of the meshfree cell edges at the "
-                          "particle). Typical values 1.51 ... 3.01.");
+        prm.declare_entry(
+          "Horizon factor",
+          "",
+          Patterns::Anything(),
+          "Horizon delta^k = factor x local particle spacing h^k, per "
+          "particle k (h^k: the mean length of the meshfree cell edges at "
+          "the particle), so delta varies with the local spacing on graded "
+          "or distorted meshes. Typical values 1.51 ... 3.01. Give either "
+          "this or 'Horizon', not both; with both empty the factor is "
+          "2.51.");
+        prm.declare_entry(
+          "Horizon",
+          "",
+          Patterns::Anything(),
+          "Absolute horizon delta, the same for every particle (Peridigm's "
+          "'Horizon'). Units: length. Give either this or 'Horizon factor', "
+          "not both; empty: use 'Horizon factor'. On a uniform lattice of "
+          "spacing h, 'Horizon = 2.51 h' gives the families of 'Horizon "
+          "factor = 2.51'; on graded or distorted meshes they differ (the "
+          "factor follows the local spacing).");
         prm.declare_entry("Nearest neighbours",
                           "0",
                           Patterns::Integer(0),
                           "If > 0, a family is its master plus the N nearest "
                           "particles, completed to pairwise families; "
-                          "'Horizon factor' is then ignored.");
+                          "'Horizon factor' and 'Horizon' are then ignored.");
         prm.declare_entry("Weight exponent",
                           "1",
                           Patterns::Double(0.),
@@ -337,9 +368,51 @@ namespace pg
     {
       prm.enter_subsection("Discretization");
       {
-        formulation        = prm.get("Formulation");
-        shape_functions    = prm.get("Shape functions");
-        horizon_factor     = prm.get_double("Horizon factor");
+        formulation     = prm.get("Formulation");
+        shape_functions = prm.get("Shape functions");
+        const std::string factor_text =
+          Utilities::trim(prm.get("Horizon factor"));
+        const std::string horizon_text = Utilities::trim(prm.get("Horizon"));
+        AssertThrow(factor_text.empty() || horizon_text.empty(),
+                    ExcBadParameter("Discretization/Horizon",
+                                    horizon_text,
+                                    "'Horizon factor' is set too (to <" +
+                                      factor_text +
+                                      ">); set exactly one of 'Horizon' "
+                                      "(absolute, length) and 'Horizon "
+                                      "factor' (x local spacing) in "
+                                      "subsection 'Discretization'."));
+        const auto positive = [](const std::string &text,
+                                 const std::string &entry) {
+          double value = 0;
+          try
+            {
+              std::size_t end = 0;
+              value           = std::stod(text, &end);
+              AssertThrow(Utilities::trim(text.substr(end)).empty(),
+                          ExcMessage(""));
+            }
+          catch (...)
+            {
+              AssertThrow(false,
+                          ExcBadParameter("Discretization/" + entry,
+                                          text,
+                                          "it must be a number."));
+            }
+          AssertThrow(value > 0. && std::isfinite(value),
+                      ExcBadParameter("Discretization/" + entry,
+                                      text,
+                                      "it must be positive."));
+          return value;
+        };
+        horizon        = 0.;
+        horizon_factor = 0.;
+        if (!horizon_text.empty())
+          horizon = positive(horizon_text, "Horizon");
+        else
+          horizon_factor = factor_text.empty() ?
+                             2.51 :
+                             positive(factor_text, "Horizon factor");
         nearest_neighbours = prm.get_integer("Nearest neighbours");
         weight_exponent    = prm.get_double("Weight exponent");
       }
@@ -529,7 +602,10 @@ namespace pg
           "take the values of subsection 'Prescribed displacement'. For "
           "clamping non-local models (CPD, large horizons) through a layer "
           "of thickness delta rather than a boundary line, whose influence "
-          "vanishes as the lattice is refined.");
+          "vanishes as the lattice is refined. The reaction of each box "
+          "(f_int - f_ext summed over its prescribed components) is "
+          "printed and written to summary.json ('box_reactions', in the "
+          "order of the boxes).");
         prm.declare_entry("Symmetry",
                           "",
                           Patterns::Anything(),
@@ -1282,13 +1358,18 @@ namespace pg
       }
       prm.leave_subsection();
 
-      AssertThrow(geometry.lower_corner.size() == dim &&
-                    geometry.upper_corner.size() == dim,
+      // The corners and subdivisions matter only for the meshes that use
+      // them; 'Mesh = file' in 3-D must not need 3-coordinate defaults.
+      AssertThrow(geometry.mesh != "hyper rectangle" ||
+                    (geometry.lower_corner.size() == dim &&
+                     geometry.upper_corner.size() == dim),
                   ExcBadParameter("Geometry/Lower corner",
                                   "",
                                   "'Lower corner' and 'Upper corner' need " +
                                     std::to_string(dim) + " coordinates."));
-      AssertThrow(geometry.subdivisions.size() == 1 ||
+      AssertThrow((geometry.mesh != "hyper rectangle" &&
+                   geometry.mesh != "cook membrane") ||
+                    geometry.subdivisions.size() == 1 ||
                     geometry.subdivisions.size() == dim,
                   ExcBadParameter("Geometry/Subdivisions",
                                   "",

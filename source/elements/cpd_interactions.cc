@@ -214,11 +214,13 @@ namespace pg
   CpdInteractions<dim>::CpdInteractions(const ParticleSet<dim> &particles,
                                         const FamilySet<dim>   &families,
                                         const CpdConstants     &constants,
-                                        const double            horizon_factor)
+                                        const double            horizon_factor,
+                                        const double            horizon)
     : particles(particles)
     , families(families)
     , cpd(constants)
     , horizon_factor(horizon_factor)
+    , horizon(horizon)
   {
     AssertThrow(cpd.C1 > 0,
                 ExcBadParameter("CPD/C1",
@@ -261,7 +263,8 @@ namespace pg
                           "CPD: particle " + std::to_string(a) + " at (" +
                           where.str() +
                           ") has no neighbour within its horizon. Increase "
-                          "'Horizon factor' in subsection 'Discretization'."));
+                          "'Horizon factor' or 'Horizon' in subsection "
+                          "'Discretization'."));
           }
         AssertThrow(n <= 65535, ExcMessage("CPD: a family has 65536 members"));
         for (unsigned int p = 1; p < n; ++p)
@@ -397,7 +400,7 @@ namespace pg
     if (!cpd.partial_volumes)
       return 1.;
     const double h     = 0.5 * (particles.spacing(a) + particles.spacing(i));
-    const double delta = horizon_factor * h;
+    const double delta = horizon_factor * h + horizon;
     const double xi    = (particles.position(i) - particles.position(a)).norm();
     return std::clamp((delta + 0.5 * h - xi) / h, 0., 1.);
   }

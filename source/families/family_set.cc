@@ -12,7 +12,8 @@ namespace pg
   void
   FamilySet<dim>::reinit(const ParticleSet<dim> &particles,
                          const double            horizon_factor,
-                         const unsigned int      nearest_neighbours)
+                         const unsigned int      nearest_neighbours,
+                         const double            horizon)
   {
     namespace bgi        = boost::geometry::index;
     const unsigned int n = particles.n_particles();
@@ -32,8 +33,9 @@ namespace pg
                      std::back_inserter(found));
         else
           {
-            const double delta = horizon_factor * particles.spacing(k);
-            Point<dim>   lower = x, upper = x;
+            const double delta =
+              horizon_factor * particles.spacing(k) + horizon;
+            Point<dim> lower = x, upper = x;
             for (unsigned int d = 0; d < dim; ++d)
               {
                 lower[d] -= delta;

@@ -296,6 +296,13 @@ namespace pg
         first = false;
       }
     out << "},\n";
+    if (!s.box_reactions.empty())
+      {
+        out << "  \"box_reactions\": [";
+        for (unsigned int b = 0; b < s.box_reactions.size(); ++b)
+          out << (b > 0 ? ", " : "") << json_list(s.box_reactions[b]);
+        out << "],\n";
+      }
     if (!s.eigenvalues.empty())
       out << "  \"max_eigenvalue\": " << json_number(s.max_eigenvalue)
           << ",\n  \"n_zero_eigenvalues\": " << s.n_zero_eigenvalues

@@ -101,6 +101,15 @@ main(int argc, char **argv)
   check("Dirichlet box that holds no vertex",
         "subsection Boundary conditions\n  set Dirichlet boxes = 5, 5 : 6, 6 "
         ": xy\nend\n");
+  check("Horizon and Horizon factor both set",
+        "subsection Discretization\n  set Horizon = 0.5\n"
+        "  set Horizon factor = 2.51\nend\n");
+  check("negative Horizon",
+        "subsection Discretization\n  set Horizon = -0.5\nend\n");
+  check("NaN traction",
+        "subsection Boundary conditions\n  subsection Traction\n"
+        "    set Function expression = sqrt(-1)*t; 0\n  end\nend\n"
+        "subsection Loading\n  set Maximum step cuts = 1\nend\n");
   check("line without an end",
         "subsection Output\n  set Lines = AA: 0, 0.7\nend\n");
 }

@@ -32,7 +32,8 @@ namespace pg
                  << " (with " << arg3
                  << " neighbours) has a singular or ill-conditioned moment "
                  << "matrix" << arg4
-                 << ". Increase 'Horizon factor' (or 'Nearest neighbours') "
+                 << ". Increase 'Horizon factor' or 'Horizon' (or 'Nearest "
+                 << "neighbours') "
                  << "in subsection 'Discretization', or reduce 'Distortion' "
                  << "in subsection 'Geometry'.");
 } // namespace pg

@@ -33,9 +33,11 @@ namespace pg
       std::vector<double>       upper_corner;
       std::vector<unsigned int> subdivisions;
       /** Plate with hole: edge length L and hole radius R (length units). */
-      double       plate_size;
-      double       hole_radius;
-      std::string  file_name;
+      double      plate_size;
+      double      hole_radius;
+      std::string file_name;
+      /** Mesh = file: merge | reject | keep coincident vertices. */
+      std::string  coincident_vertices;
       unsigned int global_refinement;
       /** Interior vertices move by up to this fraction of the local spacing. */
       double       distortion;
@@ -58,8 +60,13 @@ namespace pg
       std::string formulation;
       /** MTE1 | MLS1 | WLS1 | WTE1 */
       std::string shape_functions;
-      /** delta = factor x local particle spacing. */
+      /**
+       * delta^k = factor x local particle spacing h^k ('Horizon factor'); 0
+       * if 'Horizon' is set.
+       */
       double horizon_factor;
+      /** Absolute horizon delta ('Horizon', length); 0: use the factor. */
+      double horizon;
       /** > 0: the N nearest particles instead of a horizon. */
       unsigned int nearest_neighbours;
       /** omega = |dX|^(-2n). */

@@ -118,7 +118,8 @@ namespace pg
     CpdInteractions(const ParticleSet<dim> &particles,
                     const FamilySet<dim>   &families,
                     const CpdConstants     &constants,
-                    const double            horizon_factor);
+                    const double            horizon_factor,
+                    const double            horizon = 0.);
 
     /**
      * The residual (internal force, dE/dx) and, if @p matrix is not null,
@@ -176,6 +177,8 @@ namespace pg
     const FamilySet<dim>   &families;
     const CpdConstants      cpd;
     const double            horizon_factor;
+    /** 'Discretization/Horizon' (absolute; 0: the factor is used). */
+    const double horizon;
 
     /** Interactions of order n+1 in compressed rows per family. */
     std::array<std::vector<std::size_t>, 3> offsets;

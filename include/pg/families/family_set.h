@@ -23,14 +23,15 @@ namespace pg
     /**
      * Build the families. With @p nearest_neighbours = 0 a family holds
      * every particle within the horizon delta^k = @p horizon_factor x
-     * spacing(k); otherwise the @p nearest_neighbours nearest particles.
-     * Both are then completed to pairwise families. The search uses
-     * deal.II's RTree (boost.geometry).
+     * spacing(k) + @p horizon (absolute, length); otherwise the @p
+     * nearest_neighbours nearest particles. Both are then completed to pairwise
+     * families. The search uses deal.II's RTree (boost.geometry).
      */
     void
     reinit(const ParticleSet<dim> &particles,
            const double            horizon_factor,
-           const unsigned int      nearest_neighbours);
+           const unsigned int      nearest_neighbours,
+           const double            horizon = 0.);
 
     unsigned int
     n_families() const;

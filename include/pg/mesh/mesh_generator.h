@@ -6,6 +6,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <string>
 #include <vector>
 
 namespace pg
@@ -17,12 +18,15 @@ namespace pg
      * mesh with its boundary ids (and manifolds for curved boundaries), then
      * 'Global refinement', then 'Distortion' (reproducible by 'Random seed').
      * Throws with a message that names the entry on bad input (unreadable
-     * file, unsupported dimension, ...).
+     * file, unsupported dimension, ...). What was done to a mesh file
+     * (coincident vertices merged) is appended to @p notes, one line each,
+     * for the banner.
      */
     template <int dim>
     void
     create_mesh(const Parameters::Geometry &parameters,
-                Triangulation<dim>         &triangulation);
+                Triangulation<dim>         &triangulation,
+                std::string                *notes = nullptr);
 
     /**
      * Which active cells are meshfree, indexed by active_cell_index(), from

@@ -1,0 +1,55 @@
+#!/bin/sh
+# Peridigm's tensile test (prm/tensile_test.prm) with FEM, BCPBG Unl and
+# VCBCPBG V5sn Unl (cg), on the merged mesh and on the mesh as it comes from
+# Cubit (252 coincident node pairs, merged on reading). Prints the markdown
+# table of doc/benchmarks/tensile_test.md: wall time of the whole run, the
+# displacement at the gauge point (0.0317, 1.238, 0) and the reaction u_y
+# of each grip (Dirichlet boxes 1 and 2), and keeps the logs (and, from
+# now on, timing.txt) in doc/benchmarks/tensile_test/.
+# Usage (from the repository root, with a Release build):
+#   sh doc/benchmarks/tensile_test.sh build-release/applications/pg_solve/pg_solve
+set -e
+PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
+DATA=../shared/data/peridigm_tensile_test
+OUT=doc/benchmarks/tensile_test
+WORK=$(mktemp -d)
+mkdir -p "$OUT"
+echo "| mesh | formulation | wall time (s) | Newton its | gauge u_x | gauge u_y | gauge u_z | reaction grip y<0 | reaction grip y>0 |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for mesh in tensile_test tensile_test_unmerged; do
+  for formulation in "FEM" "BCPBG Unl" "VCBCPBG V5sn Unl"; do
+    name=$(echo "${mesh}_$formulation" | tr ' ' '_')
+    cat prm/tensile_test.prm - > "$WORK/$name.prm" <<END
+subsection Geometry
+  set File name = $DATA/$mesh.msh
+end
+subsection Discretization
+  set Formulation = $formulation
+end
+subsection Output
+  set Directory = $WORK/$name
+end
+END
+    start=$(date +%s.%N)
+    status=0
+    "$PG_SOLVE" "$WORK/$name.prm" > "$OUT/$name.log" 2>&1 || status=$?
+    end=$(date +%s.%N)
+    cp "$WORK/$name/timing.txt" "$OUT/$name.timing.txt" 2>/dev/null || true
+    python3 - "$WORK/$name/summary.json" "$mesh" "$formulation" "$start" "$end" "$status" <<'PY'
+import json, sys
+path, mesh, formulation, start, end, status = sys.argv[1:]
+wall = float(end) - float(start)
+try:
+    s = json.load(open(path))
+    u = s["points"]["gauge top"]
+    r = s.get("box_reactions", [[0, 0, 0], [0, 0, 0]])
+    print("| %s | %s | %.1f | %d | %.4g | %.4g | %.4g | %.4g | %.4g |" % (
+        mesh, formulation, wall, s["newton_iterations"], u[0], u[1], u[2],
+        r[0][1], r[1][1]))
+except Exception as e:
+    print("| %s | %s | %.1f | exit %s | | | | | |" % (mesh, formulation, wall, status))
+PY
+  done
+done
+echo "| Peridigm (README: 1 step, 1 rank) | elastic correspondence | 268.9 | 5 | -9.44e-4 | 8.111e-3 | -1.97e-4 | -2.324e9 | 2.324e9 |"
+rm -rf "$WORK"
