@@ -1,7 +1,14 @@
 #ifndef pg_base_parameters_h
 #define pg_base_parameters_h
 
+#include <pg/analysis/analysis_parameters.h>
 #include <pg/base/global.h>
+#include <pg/constraints/boundary_condition_parameters.h>
+#include <pg/elements/cpd_parameters.h>
+#include <pg/elements/discretization_parameters.h>
+#include <pg/mesh/geometry_parameters.h>
+#include <pg/postprocess/output_parameters.h>
+#include <pg/solvers/solver_parameters.h>
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
@@ -18,81 +25,14 @@ namespace pg
 {
   /**
    * The parameters of a pg run, one struct per top-level subsection of the
-   * parameter file (step-44 style). Every entry is documented where it is
-   * declared (source/base/parameters.cc); `pg_solve --print-parameters`
-   * prints that documentation.
+   * parameter file (step-44 style). Each struct lives in the folder of the
+   * code that uses it (mesh/geometry_parameters.h, solvers/solver_parameters.h,
+   * ...); this file adds Material and AllParameters, the parameters of the run
+   * as a whole. Every entry is documented where it is declared;
+   * `pg_solve --print-parameters` prints that documentation.
    */
   namespace Parameters
   {
-    /** Subsection "Geometry". */
-    struct Geometry
-    {
-      /** hyper rectangle | cook membrane | plate with hole | file */
-      std::string               mesh;
-      std::vector<double>       lower_corner;
-      std::vector<double>       upper_corner;
-      std::vector<unsigned int> subdivisions;
-      /** Plate with hole: edge length L and hole radius R (length units). */
-      double      plate_size;
-      double      hole_radius;
-      std::string file_name;
-      /** Mesh = file: merge | reject | keep coincident vertices. */
-      std::string  coincident_vertices;
-      unsigned int global_refinement;
-      /** Interior vertices move by up to this fraction of the local spacing. */
-      double       distortion;
-      unsigned int random_seed;
-      /** all | none | material ids a,b | box x0,y0 : x1,y1 | ball cx,cy : r */
-      std::string meshfree_region;
-      /** Hyper rectangle: 'box x0,y0 : x1,y1' of removed cells, or empty. */
-      std::string hole;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /** Subsection "Discretization". */
-    struct Discretization
-    {
-      /** The dissertation's formulation code (Table 7.1), or FEM. */
-      std::string formulation;
-      /** MTE1 | MLS1 | WLS1 | WTE1 */
-      std::string shape_functions;
-      /**
-       * delta^k = factor x local particle spacing h^k ('Horizon factor'); 0
-       * if 'Horizon' is set.
-       */
-      double horizon_factor;
-      /** Absolute horizon delta ('Horizon', length); 0: use the factor. */
-      double horizon;
-      /** > 0: the N nearest particles instead of a horizon. */
-      unsigned int nearest_neighbours;
-      /** omega = |dX|^(-2n). */
-      double weight_exponent;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /**
-     * Subsection "CPD": the constants of continuum-kinematics-inspired
-     * peridynamics (Formulation = CPD).
-     */
-    struct Cpd
-    {
-      double C1, C2, C3;
-      bool   partial_volumes;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
     /** Subsection "Material". */
     struct Material
     {
@@ -115,169 +55,6 @@ namespace pg
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
-    };
-
-    /** Subsection "Boundary conditions" (the functions are in AllParameters).
-     */
-    struct BoundaryConditions
-    {
-      /** Boundary id and component mask (x, y, z) of each Dirichlet part. */
-      std::vector<std::pair<types::boundary_id, std::vector<bool>>> dirichlet;
-      std::vector<types::boundary_id>                               symmetry;
-      std::vector<types::boundary_id>                               neumann;
-      /** Boundary ids loaded by sigma . n from 'Boundary stress'. */
-      std::vector<types::boundary_id> neumann_stress;
-      /**
-       * How a traction loads the particles of meshfree boundary faces:
-       * 'geometry' (the FE-consistent load, integral of T N_k over the
-       * faces) or 'test functions' (T (n . d^k), with d^k the unit-stress
-       * residual of the test functions actually used, eq. 4.32-4.35).
-       * 'automatic': 'test functions' with VC, 'geometry' without.
-       */
-      std::string particle_traction_area;
-      /**
-       * 'Fixed points': mesh vertices (dim coordinates) whose listed
-       * components take the values of 'Prescribed displacement', e.g. to
-       * remove the rigid motions of a laterally free specimen.
-       */
-      std::vector<std::pair<std::vector<double>, std::vector<bool>>>
-        fixed_points;
-      /**
-       * 'Dirichlet boxes': every mesh vertex in the closed box between two
-       * corners (dim coordinates each) has the listed components
-       * prescribed, e.g. the layers of thickness delta through which
-       * non-local models are clamped.
-       */
-      struct DirichletBox
-      {
-        std::vector<double> lower, upper;
-        std::vector<bool>   components;
-      };
-      std::vector<DirichletBox> dirichlet_boxes;
-
-      /** Whether 'Dirichlet', 'Fixed points' or 'Dirichlet boxes' is set. */
-      bool
-      prescribes_values() const
-      {
-        return !dirichlet.empty() || !fixed_points.empty() ||
-               !dirichlet_boxes.empty();
-      }
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm, const unsigned int dim);
-    };
-
-    /** Subsection "Loading". */
-    struct Loading
-    {
-      unsigned int load_steps;
-      unsigned int maximum_step_cuts;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /** Subsection "Newton". */
-    struct Newton
-    {
-      unsigned int maximum_iterations;
-      double       relative_tolerance;
-      double       absolute_tolerance;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /** Subsection "Linear solver". */
-    struct LinearSolver
-    {
-      /** direct | cg | gmres */
-      std::string type;
-      double      tolerance;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /** Subsection "Analysis". */
-    struct Analysis
-    {
-      /** static | eigenmodes | inf-sup */
-      std::string type;
-      /** How many of the smallest eigenvalues are reported. */
-      unsigned int n_eigenvalues;
-      /** inf-sup: displacement | P0 (one condensed pressure per element). */
-      std::string pressure_space;
-      /** inf-sup: the N of every N x N (x N) mesh of the unit square. */
-      std::vector<unsigned int> inf_sup_subdivisions;
-      /** inf-sup: eigenvalues below this times the largest are zero. */
-      double inf_sup_zero_tolerance;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /**
-     * Subsection "Time": quasi-static load stepping (the default) or
-     * dynamics with an explicit or implicit time integrator. The initial
-     * conditions are in AllParameters.
-     */
-    struct Time
-    {
-      /** none | leapfrog | newmark */
-      std::string integrator;
-      double      end_time;
-      /** 0: the stable time step estimate times 'Safety factor'. */
-      double time_step;
-      double safety_factor;
-      /** 0: every step. */
-      double output_interval;
-      double beta;
-      double gamma;
-
-      /** Is an integrator selected (not quasi-static load stepping)? */
-      bool
-      dynamic() const;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /** Subsection "Output". */
-    struct Output
-    {
-      std::string directory;
-      bool        vtu;
-      /** Named reference points, each with dim coordinates. */
-      std::vector<std::pair<std::string, std::vector<double>>> points;
-      /** Boundary ids whose vertex stresses go to a table. */
-      std::vector<types::boundary_id> stress_boundaries;
-      /** A named segment for displacement_along_lines.txt. */
-      struct Line
-      {
-        std::string         name;
-        std::vector<double> start, end;
-      };
-      std::vector<Line> lines;
-      /** Points per line, both ends included. */
-      unsigned int line_samples;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm, const unsigned int dim);
     };
 
     /**

@@ -2,7 +2,7 @@
 #define pg_mesh_mesh_generator_h
 
 #include <pg/base/global.h>
-#include <pg/base/parameters.h>
+#include <pg/mesh/geometry_parameters.h>
 
 #include <deal.II/grid/tria.h>
 

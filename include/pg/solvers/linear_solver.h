@@ -3,7 +3,7 @@
 
 #include <pg/base/global.h>
 #include <pg/base/linear_algebra.h>
-#include <pg/base/parameters.h>
+#include <pg/solvers/solver_parameters.h>
 
 #include <deal.II/dofs/dof_handler.h>
 

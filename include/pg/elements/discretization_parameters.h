@@ -1,0 +1,44 @@
+#ifndef pg_elements_discretization_parameters_h
+#define pg_elements_discretization_parameters_h
+
+#include <pg/base/global.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+// The parameters of the discretization (subsection "Discretization"):
+// the formulation code, the shape functions and the families.
+
+namespace pg
+{
+  namespace Parameters
+  {
+    /** Subsection "Discretization". */
+    struct Discretization
+    {
+      /** The dissertation's formulation code (Table 7.1), or FEM. */
+      std::string formulation;
+      /** MTE1 | MLS1 | WLS1 | WTE1 */
+      std::string shape_functions;
+      /**
+       * delta^k = factor x local particle spacing h^k ('Horizon factor'); 0
+       * if 'Horizon' is set.
+       */
+      double horizon_factor;
+      /** Absolute horizon delta ('Horizon', length); 0: use the factor. */
+      double horizon;
+      /** > 0: the N nearest particles instead of a horizon. */
+      unsigned int nearest_neighbours;
+      /** omega = |dX|^(-2n). */
+      double weight_exponent;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+  } // namespace Parameters
+} // namespace pg
+
+#endif

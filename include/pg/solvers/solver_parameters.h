@@ -1,0 +1,86 @@
+#ifndef pg_solvers_solver_parameters_h
+#define pg_solvers_solver_parameters_h
+
+#include <pg/base/global.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+// The parameters of the solvers: load stepping (subsection "Loading"),
+// the Newton iteration ("Newton"), the linear solver ("Linear solver")
+// and the time integrators ("Time").
+
+namespace pg
+{
+  namespace Parameters
+  {
+    /** Subsection "Loading". */
+    struct Loading
+    {
+      unsigned int load_steps;
+      unsigned int maximum_step_cuts;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** Subsection "Newton". */
+    struct Newton
+    {
+      unsigned int maximum_iterations;
+      double       relative_tolerance;
+      double       absolute_tolerance;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** Subsection "Linear solver". */
+    struct LinearSolver
+    {
+      /** direct | cg | gmres */
+      std::string type;
+      double      tolerance;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /**
+     * Subsection "Time": quasi-static load stepping (the default) or
+     * dynamics with an explicit or implicit time integrator. The initial
+     * conditions are in AllParameters.
+     */
+    struct Time
+    {
+      /** none | leapfrog | newmark */
+      std::string integrator;
+      double      end_time;
+      /** 0: the stable time step estimate times 'Safety factor'. */
+      double time_step;
+      double safety_factor;
+      /** 0: every step. */
+      double output_interval;
+      double beta;
+      double gamma;
+
+      /** Is an integrator selected (not quasi-static load stepping)? */
+      bool
+      dynamic() const;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+  } // namespace Parameters
+} // namespace pg
+
+#endif

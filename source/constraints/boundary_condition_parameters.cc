@@ -1,0 +1,191 @@
+#include <pg/base/exceptions.h>
+#include <pg/base/parameter_utilities.h>
+#include <pg/constraints/boundary_condition_parameters.h>
+
+#include <algorithm>
+#include <string>
+
+namespace pg
+{
+  namespace Parameters
+  {
+    void
+    BoundaryConditions::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      {
+        prm.declare_entry(
+          "Dirichlet",
+          "",
+          Patterns::Anything(),
+          "Comma-separated 'boundary id: components' items, e.g. '0: xy, 3: "
+          "y'. The listed displacement components on that boundary take the "
+          "values of subsection 'Prescribed displacement'.");
+        prm.declare_entry(
+          "Fixed points",
+          "",
+          Patterns::Anything(),
+          "Semicolon-separated 'coordinates: components' items, e.g. '0, 0.5: "
+          "y; 0, 1: x'. The listed displacement components of the mesh "
+          "vertex at each point take the values of subsection 'Prescribed "
+          "displacement' (a vertex must lie there). For removing the rigid "
+          "motions of a laterally free specimen.");
+        prm.declare_entry(
+          "Dirichlet boxes",
+          "",
+          Patterns::Anything(),
+          "Semicolon-separated 'x0, y0 : x1, y1 : components' items (dim "
+          "coordinates per corner), e.g. '-1, 0 : 0, 1 : xy'. The listed "
+          "displacement components of every mesh vertex in the closed box "
+          "take the values of subsection 'Prescribed displacement'. For "
+          "clamping non-local models (CPD, large horizons) through a layer "
+          "of thickness delta rather than a boundary line, whose influence "
+          "vanishes as the lattice is refined. The reaction of each box "
+          "(f_int - f_ext summed over its prescribed components) is "
+          "printed and written to summary.json ('box_reactions', in the "
+          "order of the boxes).");
+        prm.declare_entry("Symmetry",
+                          "",
+                          Patterns::Anything(),
+                          "Boundary ids of planar boundaries with zero "
+                          "normal displacement, e.g. '1, 2'.");
+        prm.declare_entry("Neumann",
+                          "",
+                          Patterns::Anything(),
+                          "Boundary ids loaded by the dead traction of "
+                          "subsection 'Traction' (first Piola traction per "
+                          "reference area).");
+        prm.declare_entry(
+          "Neumann stress",
+          "",
+          Patterns::Anything(),
+          "Boundary ids loaded by the traction sigma . n, with sigma the "
+          "stress of subsection 'Boundary stress' (dim*dim components, "
+          "row-major sigma_ij; first Piola stress, which is the Cauchy "
+          "stress under small strain) and n the outward unit normal of the "
+          "reference boundary. One stress function gives the right traction "
+          "on boundaries of every orientation, e.g. an exact solution's "
+          "stress on the two outer edges of the plate with a hole. An id "
+          "belongs to 'Neumann' or to 'Neumann stress', not to both.");
+        prm.declare_entry(
+          "Particle traction area",
+          "automatic",
+          Patterns::Selection("automatic|geometry|test functions|exact stress"),
+          "How a traction loads the particles on meshfree boundary faces. "
+          "'geometry': the FE-consistent load, the integral of T N_k over "
+          "the boundary faces (the total load is exact). 'test functions': "
+          "T (n . d^k) with d^k the unit-stress residual of the test "
+          "functions actually used (dissertation eqs. 4.32-4.35, section "
+          "7.1); this is what makes VC-corrected methods pass the patch "
+          "test, but without VC d^k misses part of the boundary area (the "
+          "share is printed at start-up). 'automatic': 'test functions' "
+          "for VC-corrected formulations, 'geometry' otherwise. 'exact "
+          "stress' (patch tests): a particle on a Neumann boundary gets the "
+          "test-function integral of the exact stress P(grad u) of "
+          "subsection 'Exact solution' (the 'Traction' function is not "
+          "used), sum_q w_q P(X_q) T^{qk} over its families; this is the "
+          "discrete integral of N_k P n over the surface plus the body "
+          "force, and equals P . d^k (eq. 4.32 with the full tensor) for a "
+          "constant stress. The quadratic patch test needs it for a linear "
+          "stress.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    BoundaryConditions::parse_parameters(ParameterHandler  &prm,
+                                         const unsigned int dim)
+    {
+      prm.enter_subsection("Boundary conditions");
+      {
+        dirichlet.clear();
+        const std::string text = prm.get("Dirichlet");
+        for (const auto &parts :
+             parse_items(text,
+                         ',',
+                         2,
+                         "Boundary conditions/Dirichlet",
+                         "each item must read 'boundary id: components', "
+                         "e.g. '0: xy'."))
+          {
+            const types::boundary_id id =
+              parse_ids(parts[0], "Boundary conditions/Dirichlet")[0];
+            dirichlet.emplace_back(
+              id,
+              parse_components(parts[1],
+                               dim,
+                               "Boundary conditions/Dirichlet",
+                               text,
+                               ", e.g. '0: xy'."));
+          }
+        fixed_points.clear();
+        const std::string points = prm.get("Fixed points");
+        for (const auto &parts :
+             parse_items(points,
+                         ';',
+                         2,
+                         "Boundary conditions/Fixed points",
+                         "each item must read 'coordinates: components', "
+                         "e.g. '0, 0.5: y'."))
+          {
+            fixed_points.emplace_back(
+              parse_coordinates(parts[0],
+                                dim,
+                                "Boundary conditions/Fixed points",
+                                points,
+                                "each point"),
+              parse_components(parts[1],
+                               dim,
+                               "Boundary conditions/Fixed points",
+                               points,
+                               "."));
+          }
+        dirichlet_boxes.clear();
+        const std::string boxes     = prm.get("Dirichlet boxes");
+        const std::string box_entry = "Boundary conditions/Dirichlet boxes";
+        for (const auto &parts :
+             parse_items(boxes,
+                         ';',
+                         3,
+                         box_entry,
+                         "each item must read 'x0, y0 : x1, y1 : components', "
+                         "e.g. '-1, 0 : 0, 1 : xy'."))
+          {
+            DirichletBox box{
+              parse_coordinates(parts[0], dim, box_entry, boxes, "each corner"),
+              parse_coordinates(parts[1], dim, box_entry, boxes, "each corner"),
+              parse_components(parts[2],
+                               dim,
+                               box_entry,
+                               boxes,
+                               ", e.g. '-1, 0 : 0, 1 : xy'.")};
+            for (unsigned int d = 0; d < dim; ++d)
+              AssertThrow(box.lower[d] <= box.upper[d],
+                          ExcBadParameter(
+                            box_entry,
+                            boxes,
+                            "the first corner of each box must be the lower "
+                            "one (x0 <= x1, y0 <= y1)."));
+            dirichlet_boxes.push_back(box);
+          }
+        symmetry =
+          parse_ids(prm.get("Symmetry"), "Boundary conditions/Symmetry");
+        neumann = parse_ids(prm.get("Neumann"), "Boundary conditions/Neumann");
+        neumann_stress = parse_ids(prm.get("Neumann stress"),
+                                   "Boundary conditions/Neumann stress");
+        for (const types::boundary_id id : neumann_stress)
+          AssertThrow(std::find(neumann.begin(), neumann.end(), id) ==
+                        neumann.end(),
+                      ExcBadParameter("Boundary conditions/Neumann stress",
+                                      prm.get("Neumann stress"),
+                                      "boundary " + std::to_string(id) +
+                                        " is also in 'Neumann'; give each "
+                                        "loaded boundary one traction."));
+        particle_traction_area = prm.get("Particle traction area");
+      }
+      prm.leave_subsection();
+    }
+  } // namespace Parameters
+} // namespace pg

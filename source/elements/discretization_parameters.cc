@@ -1,0 +1,146 @@
+#include <pg/base/exceptions.h>
+#include <pg/elements/discretization_parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <string>
+
+namespace pg
+{
+  namespace Parameters
+  {
+    void
+    Discretization::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Discretization");
+      {
+        prm.declare_entry(
+          "Formulation",
+          "BCPBG Unl TL",
+          Patterns::Anything(),
+          "The method, as the dissertation's code (Table 7.1), or FEM: "
+          "[VC|VC2][BC]<method> [V<n><b>] <points> [noBC] [TL], with the "
+          "table's defaults. <method>: PBG (eq. 4.30), PPG (= PPG1, eq. "
+          "4.21) or PPG2 (eq. 4.22). <points>: Unl (default; shape functions "
+          "at every family member), U1 (PBG at the master only: classical "
+          "correspondence) or U2 (the quadratic WTE2 at every family member, "
+          "whatever 'Shape functions' says). The bond correction BC (eq. "
+          "5.55) is the default of Unl (Table 7.1: 'default for all first "
+          "order formulations'), so 'PBG Unl' is 'BCPBG Unl TL'; 'noBC' "
+          "switches it off ('PBG Unl noBC'). U1 and U2 take no BC. VC "
+          "switches the variational-consistency correction on (section "
+          "5.3.2) with the correction function V1, V3 or V5 (default V3 for "
+          "PPG, V5 for PBG) and the boundary option p, s or sn (default sn). "
+          "VC2 adds the second-order correction (section 11.6); it is built "
+          "on PPG2, so 'VC2PPG' means PPG2, and it takes the boundary option "
+          "s (default correction function V1). The screen and summary.json "
+          "show the code with every default written out. FEM uses Q1 "
+          "elements everywhere. Examples: 'PBG Unl', 'VCPBG V5sn Unl' (= "
+          "'VCBCPBG V5sn Unl TL'), 'VCPPG V3sn Unl' (= 'VCBCPPG V3sn Unl "
+          "TL'), 'PBG U1', 'VC2PPG V1s U2'. CPD: "
+          "continuum-kinematics-inspired peridynamics with the constants of "
+          "subsection 'CPD' (the meshfree cells' vertices interact within "
+          "the horizon; no shape functions).");
+        prm.declare_entry("Shape functions",
+                          "MTE1",
+                          Patterns::Selection("MTE1|MLS1|WLS1|WTE1"),
+                          "The first-order base of Unl/U1 (Table 5.1): MTE1 "
+                          "(moving Taylor), MLS1 (moving least squares), "
+                          "WLS1 (weighted least squares), WTE1 (weighted "
+                          "Taylor). At the master MTE1 equals WTE1, so U1 "
+                          "with MTE1 is WTE1: classical correspondence.");
+        prm.declare_entry(
+          "Horizon factor",
+          "",
+          Patterns::Anything(),
+          "Horizon delta^k = factor x local particle spacing h^k, per "
+          "particle k (h^k: the mean length of the meshfree cell edges at "
+          "the particle), so delta varies with the local spacing on graded "
+          "or distorted meshes. Typical values 1.51 ... 3.01. Give either "
+          "this or 'Horizon', not both; with both empty the factor is "
+          "2.51.");
+        prm.declare_entry(
+          "Horizon",
+          "",
+          Patterns::Anything(),
+          "Absolute horizon delta, the same for every particle (Peridigm's "
+          "'Horizon'). Units: length. Give either this or 'Horizon factor', "
+          "not both; empty: use 'Horizon factor'. On a uniform lattice of "
+          "spacing h, 'Horizon = 2.51 h' gives the families of 'Horizon "
+          "factor = 2.51'; on graded or distorted meshes they differ (the "
+          "factor follows the local spacing).");
+        prm.declare_entry("Nearest neighbours",
+                          "0",
+                          Patterns::Integer(0),
+                          "If > 0, a family is its master plus the N nearest "
+                          "particles, completed to pairwise families; "
+                          "'Horizon factor' and 'Horizon' are then ignored.");
+        prm.declare_entry("Weight exponent",
+                          "1",
+                          Patterns::Double(0.),
+                          "n in the weight omega = |dX|^(-2n) (eqs. 4.5, "
+                          "5.42).");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Discretization::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Discretization");
+      {
+        formulation     = prm.get("Formulation");
+        shape_functions = prm.get("Shape functions");
+        const std::string factor_text =
+          Utilities::trim(prm.get("Horizon factor"));
+        const std::string horizon_text = Utilities::trim(prm.get("Horizon"));
+        AssertThrow(factor_text.empty() || horizon_text.empty(),
+                    ExcBadParameter("Discretization/Horizon",
+                                    horizon_text,
+                                    "'Horizon factor' is set too (to <" +
+                                      factor_text +
+                                      ">); set exactly one of 'Horizon' "
+                                      "(absolute, length) and 'Horizon "
+                                      "factor' (x local spacing) in "
+                                      "subsection 'Discretization'."));
+        const auto positive = [](const std::string &text,
+                                 const std::string &entry) {
+          double value = 0;
+          try
+            {
+              std::size_t end = 0;
+              value           = std::stod(text, &end);
+              AssertThrow(Utilities::trim(text.substr(end)).empty(),
+                          ExcMessage(""));
+            }
+          catch (...)
+            {
+              AssertThrow(false,
+                          ExcBadParameter("Discretization/" + entry,
+                                          text,
+                                          "it must be a number."));
+            }
+          AssertThrow(value > 0. && std::isfinite(value),
+                      ExcBadParameter("Discretization/" + entry,
+                                      text,
+                                      "it must be positive."));
+          return value;
+        };
+        horizon        = 0.;
+        horizon_factor = 0.;
+        if (!horizon_text.empty())
+          horizon = positive(horizon_text, "Horizon");
+        else
+          horizon_factor = factor_text.empty() ?
+                             2.51 :
+                             positive(factor_text, "Horizon factor");
+        nearest_neighbours = prm.get_integer("Nearest neighbours");
+        weight_exponent    = prm.get_double("Weight exponent");
+      }
+      prm.leave_subsection();
+    }
+  } // namespace Parameters
+} // namespace pg

@@ -1,0 +1,325 @@
+#include <pg/base/exceptions.h>
+#include <pg/mesh/mesh_file.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace pg
+{
+  namespace Mesh
+  {
+    namespace
+    {
+      /** The message for a mesh file that GridIn cannot read. */
+      std::string
+      unreadable_file_message(const std::string &file_name,
+                              const std::string &reason)
+      {
+        return "The mesh file " + file_name +
+               " given as 'File name' in subsection 'Geometry' cannot be "
+               "read: " +
+               reason +
+               ". Check the path (relative paths start in the working "
+               "directory).";
+      }
+
+
+
+      /** "(x, y, z)" for messages. */
+      template <int dim>
+      std::string
+      format_point(const Point<dim> &p)
+      {
+        std::ostringstream s;
+        s << std::setprecision(8) << "(";
+        for (unsigned int d = 0; d < dim; ++d)
+          s << (d ? ", " : "") << p[d];
+        s << ")";
+        return s.str();
+      }
+
+
+
+      /**
+       * Distinct vertices of the file's mesh at the same position (within
+       * 1e-10 x the bounding-box diagonal in every coordinate) disconnect
+       * the cells there: Q1 elements on either side do not share DoFs (a
+       * singular system) and the particles coincide (NaN in the shape
+       * functions). 'Coincident vertices = merge' rebuilds the coarse mesh
+       * with one vertex per position; 'reject' stops naming the positions.
+       * Faces that the merge makes interior lose their boundary data.
+       */
+      template <int dim>
+      void
+      handle_coincident_vertices(const Parameters::Geometry &parameters,
+                                 Triangulation<dim>         &triangulation,
+                                 std::string                *notes)
+      {
+        auto [vertices, cells, subcelldata] =
+          GridTools::get_coarse_mesh_description(triangulation);
+        const unsigned int n_vertices = vertices.size();
+        if (n_vertices == 0)
+          return;
+        Point<dim> lower = vertices[0], upper = vertices[0];
+        for (const Point<dim> &p : vertices)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = std::min(lower[d], p[d]);
+              upper[d] = std::max(upper[d], p[d]);
+            }
+        const double tolerance = 1e-10 * lower.distance(upper);
+
+        // Pairs within the tolerance, by a sweep over x.
+        std::vector<unsigned int> order(n_vertices);
+        for (unsigned int i = 0; i < n_vertices; ++i)
+          order[i] = i;
+        std::sort(order.begin(),
+                  order.end(),
+                  [&](const unsigned int a, const unsigned int b) {
+                    return vertices[a][0] < vertices[b][0];
+                  });
+        std::vector<std::pair<unsigned int, unsigned int>> pairs;
+        for (unsigned int a = 0; a < n_vertices; ++a)
+          for (unsigned int b = a + 1;
+               b < n_vertices &&
+               vertices[order[b]][0] - vertices[order[a]][0] <= tolerance;
+               ++b)
+            {
+              bool same = true;
+              for (unsigned int d = 1; d < dim; ++d)
+                same = same && std::abs(vertices[order[b]][d] -
+                                        vertices[order[a]][d]) <= tolerance;
+              if (same)
+                pairs.emplace_back(order[a], order[b]);
+            }
+        if (pairs.empty())
+          return;
+
+        std::set<unsigned int> involved;
+        for (const auto &[a, b] : pairs)
+          involved.insert({a, b});
+        std::string            positions;
+        std::set<unsigned int> listed;
+        for (const auto &[a, b] : pairs)
+          if (listed.size() < 5 && listed.insert(a).second)
+            positions +=
+              (positions.empty() ? "" : ", ") + format_point(vertices[a]);
+        if (parameters.coincident_vertices == "keep")
+          {
+            if (notes != nullptr)
+              *notes += "  mesh file:       kept " +
+                        std::to_string(involved.size()) +
+                        " coincident vertices (Coincident vertices = keep): "
+                        "the cells on either side are not connected, e.g. "
+                        "at " +
+                        positions + "\n";
+            return;
+          }
+        std::ostringstream tolerance_text;
+        tolerance_text << std::setprecision(3) << tolerance;
+        AssertThrow(parameters.coincident_vertices == "merge",
+                    ExcMessage(
+                      "The mesh file " + parameters.file_name + " has " +
+                      std::to_string(involved.size()) +
+                      " vertices that coincide with another one (" +
+                      std::to_string(pairs.size()) + " pairs closer than " +
+                      tolerance_text.str() + " in every coordinate), e.g. at " +
+                      positions +
+                      (listed.size() < involved.size() ? ", ..." : "") +
+                      ". The cells on either side of them are not "
+                      "connected (blocks of the mesh generator not merged). "
+                      "Set 'Coincident vertices = merge' in subsection "
+                      "'Geometry' to merge them, or merge them in the mesh "
+                      "generator."));
+
+        std::vector<unsigned int> considered(involved.begin(), involved.end());
+        GridTools::delete_duplicated_vertices(vertices,
+                                              cells,
+                                              subcelldata,
+                                              considered,
+                                              tolerance);
+        GridTools::delete_unused_vertices(vertices, cells, subcelldata);
+        const unsigned int n_merged = n_vertices - vertices.size();
+
+        // Boundary data of faces (and, in 3-D, edges) that are now interior.
+        std::map<std::vector<unsigned int>, unsigned int> face_count;
+        for (const CellData<dim> &cell : cells)
+          for (const unsigned int f : GeometryInfo<dim>::face_indices())
+            {
+              std::vector<unsigned int> face;
+              for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_face;
+                   ++v)
+                face.push_back(
+                  cell
+                    .vertices[GeometryInfo<dim>::face_to_cell_vertices(f, v)]);
+              std::sort(face.begin(), face.end());
+              ++face_count[face];
+            }
+        const auto on_boundary = [&](const auto &face_data) {
+          std::vector<unsigned int> face(face_data.vertices.begin(),
+                                         face_data.vertices.end());
+          std::sort(face.begin(), face.end());
+          const auto it = face_count.find(face);
+          return it != face_count.end() && it->second == 1;
+        };
+        if constexpr (dim == 2)
+          {
+            auto &lines = subcelldata.boundary_lines;
+            lines.erase(std::remove_if(lines.begin(),
+                                       lines.end(),
+                                       [&](const CellData<1> &l) {
+                                         return !on_boundary(l);
+                                       }),
+                        lines.end());
+          }
+        else
+          {
+            auto &quads = subcelldata.boundary_quads;
+            quads.erase(std::remove_if(quads.begin(),
+                                       quads.end(),
+                                       [&](const CellData<2> &q) {
+                                         return !on_boundary(q);
+                                       }),
+                        quads.end());
+            std::set<std::pair<unsigned int, unsigned int>> edges;
+            for (const CellData<2> &q : quads)
+              for (const unsigned int l : GeometryInfo<2>::face_indices())
+                {
+                  const unsigned int a =
+                    q.vertices[GeometryInfo<2>::face_to_cell_vertices(l, 0)];
+                  const unsigned int b =
+                    q.vertices[GeometryInfo<2>::face_to_cell_vertices(l, 1)];
+                  edges.emplace(std::min(a, b), std::max(a, b));
+                }
+            auto &lines = subcelldata.boundary_lines;
+            lines.erase(std::remove_if(lines.begin(),
+                                       lines.end(),
+                                       [&](const CellData<1> &l) {
+                                         return edges.count(
+                                                  {std::min(l.vertices[0],
+                                                            l.vertices[1]),
+                                                   std::max(l.vertices[0],
+                                                            l.vertices[1])}) ==
+                                                0;
+                                       }),
+                        lines.end());
+          }
+
+        try
+          {
+            GridTools::consistently_order_cells(cells);
+          }
+        catch (const ExceptionBase &)
+          {
+            // 3-D meshes that cannot be ordered: deal.II handles the face
+            // orientations itself
+          }
+        triangulation.clear();
+        triangulation.create_triangulation(vertices, cells, subcelldata);
+
+        if (notes != nullptr)
+          *notes += "  mesh file:       merged " + std::to_string(n_merged) +
+                    " coincident vertices (" + std::to_string(n_vertices) +
+                    " -> " + std::to_string(vertices.size()) + "), e.g. at " +
+                    positions + "\n";
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    read_mesh_file(const Parameters::Geometry &parameters,
+                   Triangulation<dim>         &triangulation,
+                   std::string                *notes)
+    {
+      const std::string &file_name = parameters.file_name;
+
+      const std::string::size_type dot = file_name.find_last_of('.');
+      std::string                  extension =
+        (dot == std::string::npos ? "" : file_name.substr(dot + 1));
+      std::transform(extension.begin(),
+                     extension.end(),
+                     extension.begin(),
+                     [](const unsigned char c) { return std::tolower(c); });
+
+      typename GridIn<dim>::Format format;
+      if (extension == "msh")
+        format = GridIn<dim>::msh;
+      else if (extension == "inp")
+        format = GridIn<dim>::abaqus;
+      else if (extension == "ucd")
+        format = GridIn<dim>::ucd;
+      else
+        AssertThrow(false,
+                    ExcBadParameter("Geometry/File name",
+                                    file_name,
+                                    "its extension must be .msh (Gmsh), "
+                                    ".inp (Abaqus) or .ucd (UCD); these "
+                                    "are the formats pg reads."));
+
+      std::ifstream input(file_name);
+      AssertThrow(input.good(),
+                  ExcMessage(unreadable_file_message(
+                    file_name,
+                    "it does not exist or cannot be opened")));
+
+      // GridIn's own message says what is wrong inside the file; print_info
+      // gives it without the source location that what() adds.
+      std::string reason;
+      try
+        {
+          GridIn<dim> grid_in;
+          grid_in.attach_triangulation(triangulation);
+          grid_in.read(input, format);
+        }
+      catch (const ExceptionBase &exc)
+        {
+          std::ostringstream s;
+          exc.print_info(s);
+          reason = "deal.II's GridIn reports: " + Utilities::trim(s.str());
+        }
+      catch (const std::exception &exc)
+        {
+          reason = "deal.II's GridIn reports: " +
+                   Utilities::trim(std::string(exc.what()));
+        }
+      while (!reason.empty() && reason.back() == '.')
+        reason.pop_back();
+      AssertThrow(reason.empty(),
+                  ExcMessage(unreadable_file_message(file_name, reason)));
+      AssertThrow(triangulation.n_active_cells() > 0,
+                  ExcMessage(unreadable_file_message(
+                    file_name,
+                    "it contains no cells of dimension " +
+                      std::to_string(dim))));
+      handle_coincident_vertices(parameters, triangulation, notes);
+    }
+
+
+
+    template void
+    read_mesh_file<2>(const Parameters::Geometry &,
+                      Triangulation<2> &,
+                      std::string *);
+    template void
+    read_mesh_file<3>(const Parameters::Geometry &,
+                      Triangulation<3> &,
+                      std::string *);
+  } // namespace Mesh
+} // namespace pg

@@ -1,0 +1,247 @@
+#include <pg/base/exceptions.h>
+#include <pg/solvers/solver_parameters.h>
+
+#include <sstream>
+#include <string>
+
+namespace pg
+{
+  namespace Parameters
+  {
+    void
+    Loading::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loading");
+      {
+        prm.declare_entry("Load steps",
+                          "1",
+                          Patterns::Integer(1),
+                          "Number of equal load steps; the load factor t "
+                          "runs from 0 to 1.");
+        prm.declare_entry("Maximum step cuts",
+                          "5",
+                          Patterns::Integer(0, 30),
+                          "A load step whose Newton iteration diverges is "
+                          "halved and repeated, at most this often.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Loading::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loading");
+      {
+        load_steps        = prm.get_integer("Load steps");
+        maximum_step_cuts = prm.get_integer("Maximum step cuts");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Newton::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Newton");
+      {
+        prm.declare_entry("Maximum iterations",
+                          "20",
+                          Patterns::Integer(1),
+                          "Newton iterations per load step before the step "
+                          "counts as diverged.");
+        prm.declare_entry("Relative tolerance",
+                          "1e-10",
+                          Patterns::Double(0.),
+                          "Converged when |R| <= this x |R| of the first "
+                          "iteration of the step, ...");
+        prm.declare_entry("Absolute tolerance",
+                          "1e-12",
+                          Patterns::Double(0.),
+                          "... or when |R| <= this (force units).");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Newton::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Newton");
+      {
+        maximum_iterations = prm.get_integer("Maximum iterations");
+        relative_tolerance = prm.get_double("Relative tolerance");
+        absolute_tolerance = prm.get_double("Absolute tolerance");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    LinearSolver::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      {
+        prm.declare_entry("Type",
+                          "direct",
+                          Patterns::Selection("direct|cg|gmres"),
+                          "direct: Trilinos Amesos with MUMPS (KLU if "
+                          "Trilinos lacks MUMPS). cg (symmetric "
+                          "tangents only: FEM and PBG with hyperelastic "
+                          "materials) or gmres, both preconditioned by "
+                          "Trilinos ML algebraic multigrid.");
+        prm.declare_entry("Tolerance",
+                          "1e-10",
+                          Patterns::Double(0.),
+                          "Relative residual reduction of cg and gmres.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    LinearSolver::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      {
+        type      = prm.get("Type");
+        tolerance = prm.get_double("Tolerance");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    bool
+    Time::dynamic() const
+    {
+      return integrator != "none";
+    }
+
+
+
+    void
+    Time::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time");
+      {
+        prm.declare_entry(
+          "Integrator",
+          "none",
+          Patterns::Selection("none|leapfrog|newmark"),
+          "'none': quasi-static load stepping (subsection 'Loading'); the "
+          "variable t of the boundary-condition and load functions is the "
+          "load factor from 0 to 1. 'leapfrog': explicit central differences "
+          "(velocity Verlet) with the lumped mass, rho_0 times the integral "
+          "of N_k over all cells (= rho_0 V^k at a particle); one residual "
+          "assembly per step, no matrix. 'newmark': implicit Newmark with "
+          "'Newmark beta' and 'Newmark gamma', Newton's method on the "
+          "effective tangent K + M / (beta dt^2) with the consistent Q1 mass "
+          "on finite element cells and rho_0 V^k at the particles "
+          "(subsections 'Newton' and 'Linear solver' apply). With an "
+          "integrator, t in the boundary-condition and load functions is the "
+          "time (time units) from 0 to 'End time', 'Loading' is ignored, "
+          "and statistics.txt holds the energies: kinetic 1/2 v.M v, the "
+          "work of the internal forces, of the external loads and of the "
+          "supports (the reactions of the constrained DoFs, inertia "
+          "included), each accumulated with the trapezoidal rule, and their "
+          "balance (0 for exact energy conservation).");
+        prm.declare_entry("End time",
+                          "1",
+                          Patterns::Double(),
+                          "The run ends at this time (> 0). Units: time.");
+        prm.declare_entry(
+          "Time step",
+          "0",
+          Patterns::Double(),
+          "dt (>= 0). 0: the stable step of central differences, 2 / "
+          "omega_max, times 'Safety factor', with omega_max^2 the largest "
+          "eigenvalue of M^-1 K (power iteration with the lumped mass and "
+          "the tangent of the initial state), shortened so that the steps "
+          "end at 'End time'. Leapfrog rejects a step above 2 / omega_max. "
+          "Units: time.");
+        prm.declare_entry("Safety factor",
+                          "0.8",
+                          Patterns::Double(),
+                          "Automatic time step: this fraction (0 < f <= 1) "
+                          "of the stable step estimate.");
+        prm.declare_entry("Output interval",
+                          "0",
+                          Patterns::Double(),
+                          "Statistics, VTU files and a progress line (t, "
+                          "step, energies) every so much time (the first "
+                          "step at or after each multiple). 0: every step. "
+                          "Units: time.");
+        prm.declare_entry("Newmark beta",
+                          "0.25",
+                          Patterns::Double(),
+                          "beta of Newmark's method (0 < beta <= 0.5); 1/4 "
+                          "with gamma = 1/2 is the average acceleration "
+                          "rule, unconditionally stable and energy "
+                          "conserving for linear problems.");
+        prm.declare_entry("Newmark gamma",
+                          "0.5",
+                          Patterns::Double(),
+                          "gamma of Newmark's method (0.5 <= gamma <= 1); "
+                          "gamma > 1/2 adds numerical damping.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Time::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Time");
+      {
+        integrator      = prm.get("Integrator");
+        end_time        = prm.get_double("End time");
+        time_step       = prm.get_double("Time step");
+        safety_factor   = prm.get_double("Safety factor");
+        output_interval = prm.get_double("Output interval");
+        beta            = prm.get_double("Newmark beta");
+        gamma           = prm.get_double("Newmark gamma");
+      }
+      prm.leave_subsection();
+
+      if (!dynamic())
+        return;
+      const auto text = [](const double x) {
+        std::ostringstream s;
+        s << x;
+        return s.str();
+      };
+      AssertThrow(end_time > 0.,
+                  ExcBadParameter("Time/End time",
+                                  text(end_time),
+                                  "it must be positive."));
+      AssertThrow(time_step >= 0.,
+                  ExcBadParameter("Time/Time step",
+                                  text(time_step),
+                                  "it must be positive, or 0 for the "
+                                  "automatic (stable) step."));
+      AssertThrow(safety_factor > 0. && safety_factor <= 1.,
+                  ExcBadParameter("Time/Safety factor",
+                                  text(safety_factor),
+                                  "it must lie in (0, 1]."));
+      AssertThrow(output_interval >= 0.,
+                  ExcBadParameter("Time/Output interval",
+                                  text(output_interval),
+                                  "it must be >= 0 (0: every step)."));
+      AssertThrow(beta > 0. && beta <= 0.5,
+                  ExcBadParameter("Time/Newmark beta",
+                                  text(beta),
+                                  "it must lie in (0, 0.5]."));
+      AssertThrow(gamma >= 0.5 && gamma <= 1.,
+                  ExcBadParameter("Time/Newmark gamma",
+                                  text(gamma),
+                                  "it must lie in [0.5, 1]."));
+    }
+  } // namespace Parameters
+} // namespace pg
