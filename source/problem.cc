@@ -16,6 +16,8 @@
 #include <pg/postprocess/output.h>
 #include <pg/problem.h>
 #include <pg/solvers/linear_solver.h>
+#include <pg/solvers/load_stepper.h>
+#include <pg/solvers/newton_solver.h>
 #include <pg/solvers/time_integration.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -80,11 +82,18 @@ namespace pg
     solve_step(const double t, unsigned int &iterations);
     /**
      * Solve matrix * update = rhs and add the update (with the homogeneous
-     * constraints) to the solution; false, with a message, if the linear
-     * solver does not converge.
+     * constraints) to the solution, with @p energy = update . rhs; false,
+     * with a message, if the linear solver does not converge.
      */
     bool
-    apply_newton_update();
+    apply_newton_update(double &energy);
+
+    /**
+     * Newton's operations on the static residual: assemble (failures
+     * reduced over the ranks), |R|, solve and update.
+     */
+    NewtonSolver::Operations
+    newton_operations();
 
     void
     update_full_solution();
@@ -1750,6 +1759,26 @@ namespace pg
 
 
   template <int dim>
+  NewtonSolver::Operations
+  Problem<dim>::Implementation::newton_operations()
+  {
+    NewtonSolver::Operations operations;
+    operations.assemble = [this]() -> std::string {
+      assemble(true);
+      if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) == 0)
+        return "";
+      return failure.empty() ? "the assembly failed on another rank" : failure;
+    };
+    operations.residual_norm    = [this]() { return rhs.l2_norm(); };
+    operations.solve_and_update = [this](double &energy) {
+      return apply_newton_update(energy);
+    };
+    return operations;
+  }
+
+
+
+  template <int dim>
   bool
   Problem<dim>::Implementation::solve_step(const double  t,
                                            unsigned int &iterations)
@@ -1760,64 +1789,22 @@ namespace pg
     update_full_solution();
     last_failure.clear();
 
-    summary.newton_residuals_last_step.clear();
-    double             first = 0;
-    std::ostringstream line;
-    line << std::scientific << std::setprecision(2);
-    iterations = 0;
-    for (unsigned int it = 0; it <= prm.newton.maximum_iterations; ++it)
-      {
-        assemble(true);
-        const bool failed =
-          Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0;
-        if (failed)
-          {
-            last_failure =
-              failure.empty() ? "the assembly failed on another rank" : failure;
-            pcout << "    assembly failed"
-                  << (failure.empty() ? "" : ": " + failure.substr(0, 400))
-                  << std::endl;
-            return false;
-          }
-        const double residual = rhs.l2_norm();
-        summary.newton_residuals_last_step.push_back(residual);
-        if (it == 0)
-          first = residual;
-        if (!std::isfinite(residual))
-          {
-            // never print a NaN residual as a ratio 0
-            line << " " << residual;
-            last_failure = "the Newton residual is not finite (|R| = " +
-                           std::to_string(residual) + ")";
-            break;
-          }
-        line << " " << (first > 0 ? residual / first : 0.);
-        if (residual <= prm.newton.absolute_tolerance ||
-            residual <= prm.newton.relative_tolerance * first)
-          {
-            pcout << "    Newton " << it << ": |R|/|R_0| =" << line.str()
-                  << std::endl;
-            summary.newton_residuals.push_back(
-              summary.newton_residuals_last_step);
-            return true;
-          }
-        if (it == prm.newton.maximum_iterations)
-          break;
-
-        if (!apply_newton_update())
-          return false;
-        ++iterations;
-      }
-    pcout << "    Newton did not converge: |R|/|R_0| =" << line.str()
-          << std::endl;
-    return false;
+    const NewtonSolver::Result result =
+      NewtonSolver(prm.newton).solve(newton_operations());
+    summary.newton_residuals_last_step = result.residuals;
+    iterations                         = result.updates;
+    last_failure                       = result.failure;
+    NewtonSolver::report(result, pcout);
+    if (result.converged())
+      summary.newton_residuals.push_back(result.residuals);
+    return result.converged();
   }
 
 
 
   template <int dim>
   bool
-  Problem<dim>::Implementation::apply_newton_update()
+  Problem<dim>::Implementation::apply_newton_update(double &energy)
   {
     Timer timer;
     update = 0;
@@ -1839,6 +1826,7 @@ namespace pg
     time_solve += timer.wall_time();
     ++summary.assembly_cost.n_solves;
     zero_constraints.distribute(update);
+    energy = update * rhs;
     solution_owned += update;
     update_full_solution();
     return true;
@@ -2699,65 +2687,32 @@ namespace pg
     postprocess(0, 0., 0);
     postprocess_timer.stop();
 
+    LoadStepper::Operations stepping;
+    stepping.solve = [this](const double t, unsigned int &iterations) {
+      return solve_step(t, iterations);
+    };
+    stepping.commit = [this]() { converged_solution = solution_owned; };
+    stepping.revert = [this]() {
+      solution_owned = converged_solution;
+      update_full_solution();
+    };
+    stepping.step_done = [this](const unsigned int step,
+                                const double       t,
+                                const unsigned int iterations) {
+      summary.newton_iterations += iterations;
+      summary.load_steps = step;
+      summary.converged  = true;
+      postprocess_timer.start();
+      postprocess(step, t, iterations);
+      postprocess_timer.stop();
+    };
+    stepping.give_up = [this](const unsigned int step, const double t) {
+      summary.converged = false;
+      write_files(step, t);
+    };
+    stepping.last_failure = [this]() { return last_failure; };
+    LoadStepper(prm.loading, prm.output.directory, pcout).run(stepping);
     const unsigned int n_steps = prm.loading.load_steps;
-    double             t       = 0;
-    for (unsigned int step = 1; step <= n_steps; ++step)
-      {
-        const double       target = static_cast<double>(step) / n_steps;
-        double             dt     = target - t;
-        unsigned int       cuts   = 0;
-        std::ostringstream header;
-        header << "  load step " << step << ", t = " << target;
-        pcout << header.str() << std::endl;
-        unsigned int step_iterations = 0;
-        while (t < target - 1e-14)
-          {
-            const double t_new      = std::min(target, t + dt);
-            converged_solution      = solution_owned;
-            unsigned int iterations = 0;
-            if (solve_step(t_new, iterations))
-              {
-                t = t_new;
-                step_iterations += iterations;
-                continue;
-              }
-            solution_owned = converged_solution;
-            update_full_solution();
-            if (++cuts > prm.loading.maximum_step_cuts)
-              {
-                summary.converged = false;
-                write_files(step, t);
-                AssertThrow(
-                  false,
-                  ExcMessage(
-                    "Load step " + std::to_string(step) +
-                    " did not converge after " +
-                    std::to_string(prm.loading.maximum_step_cuts) +
-                    " step cuts (last load factor reached: " +
-                    std::to_string(t) + "). " +
-                    (last_failure.empty() ?
-                       std::string() :
-                       "The last attempt ended with: " + last_failure + " ") +
-                    // smaller steps do not cure a NaN in the input
-                    (last_failure.find("NaN or inf") != std::string::npos ?
-                       std::string() :
-                       "Increase 'Load steps' or 'Maximum step "
-                       "cuts' in subsection 'Loading', or "
-                       "'Maximum iterations' in subsection "
-                       "'Newton'. ") +
-                    "The results of the converged steps are in '" +
-                    prm.output.directory + "'."));
-              }
-            dt /= 2;
-            pcout << "    cutting the step to dt = " << dt << std::endl;
-          }
-        summary.newton_iterations += step_iterations;
-        summary.load_steps = step;
-        summary.converged  = true;
-        postprocess_timer.start();
-        postprocess(step, t, step_iterations);
-        postprocess_timer.stop();
-      }
     postprocess_timer.start();
 
     // The oscillation indicator and a plain table of the particle fields
@@ -3003,59 +2958,41 @@ namespace pg
     constraints.distribute(solution_owned);
     update_full_solution();
 
-    LinearAlgebra::Vector a_new(owned_dofs, comm), Ma(owned_dofs, comm);
-    summary.newton_residuals_last_step.clear();
-    double             reference = 0;
-    std::ostringstream line;
-    line << std::scientific << std::setprecision(2);
-    iterations = 0;
-    for (unsigned int it = 0; it <= prm.newton.maximum_iterations; ++it)
+    // Newton on the effective residual: the static one plus the inertia
+    // M a_new, a_new = c0 (u - u~); the tangent gains c0 M.
+    LinearAlgebra::Vector    a_new(owned_dofs, comm), Ma(owned_dofs, comm);
+    double                   static_norm = 0;
+    NewtonSolver::Operations operations  = newton_operations();
+    operations.assemble                  = [&]() -> std::string {
+      assemble(true);
+      if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0)
+        return failure.empty() ? "the assembly failed on another rank" :
+                                                  failure;
+      a_new = solution_owned;
+      a_new -= u_tilde;
+      a_new *= c0;
+      mass_matrix.vmult(Ma, a_new);
+      static_norm = rhs.l2_norm();
+      add_condensed(Ma, -1., rhs);
+      matrix.add(c0, condensed_mass);
+      return "";
+    };
+    operations.reference = [&](const double first) {
+      return std::max({first, static_norm, Ma.l2_norm()});
+    };
+    const NewtonSolver::Result result =
+      NewtonSolver(prm.newton).solve(operations);
+    summary.newton_residuals_last_step = result.residuals;
+    iterations                         = result.updates;
+    last_failure                       = result.failure;
+    if (!result.converged())
       {
-        assemble(true);
-        if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0)
-          {
-            last_failure =
-              failure.empty() ? "the assembly failed on another rank" : failure;
-            pcout << "    assembly failed"
-                  << (failure.empty() ? "" : ": " + failure.substr(0, 400))
-                  << std::endl;
-            return false;
-          }
-        a_new = solution_owned;
-        a_new -= u_tilde;
-        a_new *= c0;
-        mass_matrix.vmult(Ma, a_new);
-        const double static_norm = rhs.l2_norm();
-        add_condensed(Ma, -1., rhs);
-        matrix.add(c0, condensed_mass);
-        const double residual = rhs.l2_norm();
-        summary.newton_residuals_last_step.push_back(residual);
-        if (it == 0)
-          reference = std::max({residual, static_norm, Ma.l2_norm()});
-        if (!std::isfinite(residual))
-          {
-            line << " " << residual;
-            last_failure = "the Newton residual is not finite (|R| = " +
-                           std::to_string(residual) + ")";
-            break;
-          }
-        line << " " << (reference > 0 ? residual / reference : 0.);
-        if (residual <= prm.newton.absolute_tolerance ||
-            residual <= prm.newton.relative_tolerance * reference)
-          {
-            v.add(dt * (1. - gamma), a, dt * gamma, a_new);
-            a = a_new;
-            return true;
-          }
-        if (it == prm.newton.maximum_iterations)
-          break;
-        if (!apply_newton_update())
-          return false;
-        ++iterations;
+        NewtonSolver::report(result, pcout);
+        return false;
       }
-    pcout << "    Newton did not converge: |R|/|R_0| =" << line.str()
-          << std::endl;
-    return false;
+    v.add(dt * (1. - gamma), a, dt * gamma, a_new);
+    a = a_new;
+    return true;
   }
 
 
