@@ -1,12 +1,17 @@
 #include <pg/analysis/eigenmodes.h>
 #include <pg/analysis/inf_sup.h>
+#include <pg/assembly/assembler.h>
+#include <pg/assembly/loads.h>
 #include <pg/base/exceptions.h>
 #include <pg/base/formulation_code.h>
 #include <pg/base/linear_algebra.h>
 #include <pg/elements/cpd_interactions.h>
+#include <pg/elements/element_group.h>
 #include <pg/elements/family_elements.h>
+#include <pg/elements/family_group.h>
 #include <pg/elements/kernel_cost.h>
 #include <pg/elements/q1_cell.h>
+#include <pg/elements/q1_cell_group.h>
 #include <pg/elements/quadrature_table.h>
 #include <pg/elements/second_order_correction.h>
 #include <pg/families/family_set.h>
@@ -206,14 +211,12 @@ namespace pg
       const typename DoFHandler<dim>::active_cell_iterator &cell) const;
 
     /**
-     * Subtract the FE-consistent dead traction load of the Neumann faces of
-     * @p cell from the element residual @p residual (node-major).
+     * The particle loads (the body force V^k rho_0 b and the tractions
+     * through the test functions) and the FE-consistent traction on
+     * meshfree Neumann faces: the load term of the Assembler.
      */
     void
-    add_face_tractions(
-      const typename DoFHandler<dim>::active_cell_iterator &cell,
-      FEFaceValues<dim>                                    &fe_face_values,
-      Vector<double>                                       &residual) const;
+    add_particle_loads(Assembler<dim> &assembler) const;
 
     /**
      * 'Time/Integrator' leapfrog or newmark: initial conditions, masses,
@@ -380,7 +383,14 @@ namespace pg
     void
     compute_boundary_area_weights();
 
-    std::mutex  failure_mutex;
+    /** The dead loads of 'Boundary conditions' and the body force. */
+    const Loads<dim> loads;
+    /** The element groups and the assembler over them (set up in setup()). */
+    std::unique_ptr<Q1CellGroup<dim>>  q1_cells;
+    std::unique_ptr<ElementGroup<dim>> family_group;
+    std::unique_ptr<Assembler<dim>>    assembler;
+
+    /** The first failure of the last assembly on this rank (or empty). */
     std::string failure;
     /** Why the last failed (sub)step failed, for the final message. */
     std::string last_failure;
@@ -423,6 +433,7 @@ namespace pg
          formulation.variational_consistency))
     , traction_from_exact_stress(
         parameters.boundary_conditions.particle_traction_area == "exact stress")
+    , loads(parameters)
   {
     AssertThrow(!(parameters.linear_solver.type == "cg" &&
                   (formulation.method == FormulationCode::Method::ppg1 ||
@@ -580,32 +591,26 @@ namespace pg
     make_constraints(constraints, false);
     make_constraints(zero_constraints, true);
 
-    DynamicSparsityPattern               dsp(relevant_dofs);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : owned_fe_cells)
-      {
-        cell->get_dof_indices(dofs);
-        zero_constraints.add_entries_local_to_global(dofs, dsp, true);
-      }
-    for (const unsigned int k : owned_families)
-      {
-        const auto members = families.members(k);
-        dofs.resize(members.size() * dim);
-        for (unsigned int a = 0; a < members.size(); ++a)
-          for (unsigned int c = 0; c < dim; ++c)
-            dofs[a * dim + c] = particles.dof(members[a], c);
-        if (cpd)
-          {
-            // one horizon: particle k couples to its neighbours only (the
-            // zero blocks of the family's local matrix are not added)
-            const std::vector<types::global_dof_index> row(dofs.begin(),
-                                                           dofs.begin() + dim);
-            zero_constraints.add_entries_local_to_global(row, dofs, dsp, true);
-            zero_constraints.add_entries_local_to_global(dofs, row, dsp, true);
-          }
-        else
-          zero_constraints.add_entries_local_to_global(dofs, dsp, true);
-      }
+    // The element groups: Q1 cells first, then the families (PG or CPD).
+    q1_cells =
+      std::make_unique<Q1CellGroup<dim>>(owned_fe_cells, *material, loads);
+    if (cpd)
+      family_group = std::make_unique<CpdGroup<dim>>(owned_families,
+                                                     families,
+                                                     particles,
+                                                     *cpd);
+    else
+      family_group = std::make_unique<FamilyGroup<dim>>(owned_families,
+                                                        families,
+                                                        particles,
+                                                        family_tables,
+                                                        *material);
+    assembler = std::make_unique<Assembler<dim>>(
+      zero_constraints,
+      std::vector<ElementGroup<dim> *>{q1_cells.get(), family_group.get()});
+
+    DynamicSparsityPattern dsp(relevant_dofs);
+    assembler->add_sparsity(dsp);
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                owned_dofs,
                                                comm,
@@ -1337,56 +1342,11 @@ namespace pg
 
 
 
-  namespace
-  {
-    template <int dim>
-    struct Scratch
-    {
-      Scratch(const FiniteElement<dim> &fe_scalar)
-        : fe_values(fe_scalar,
-                    QGauss<dim>(2),
-                    update_gradients | update_values |
-                      update_quadrature_points | update_JxW_values)
-        , fe_face_values(fe_scalar,
-                         QGauss<dim - 1>(2),
-                         update_values | update_quadrature_points |
-                           update_normal_vectors | update_JxW_values)
-      {}
-      Scratch(const Scratch &other)
-        : fe_values(other.fe_values.get_fe(),
-                    other.fe_values.get_quadrature(),
-                    other.fe_values.get_update_flags())
-        , fe_face_values(other.fe_face_values.get_fe(),
-                         other.fe_face_values.get_quadrature(),
-                         other.fe_face_values.get_update_flags())
-      {}
-      FEValues<dim>               fe_values;
-      FEFaceValues<dim>           fe_face_values;
-      QuadratureTable<dim>        table;
-      std::vector<Tensor<1, dim>> y;
-    };
-
-    struct Copy
-    {
-      std::vector<types::global_dof_index> dofs;
-      FullMatrix<double>                   matrix;
-      /** f_int - f_ext of the element */
-      Vector<double> residual;
-      bool           with_matrix = true;
-    };
-  } // namespace
-
-
-
   template <int dim>
   bool
   Problem<dim>::Implementation::is_neumann(const types::boundary_id id) const
   {
-    const auto &bc = prm.boundary_conditions;
-    return std::find(bc.neumann.begin(), bc.neumann.end(), id) !=
-             bc.neumann.end() ||
-           std::find(bc.neumann_stress.begin(), bc.neumann_stress.end(), id) !=
-             bc.neumann_stress.end();
+    return loads.is_neumann(id);
   }
 
 
@@ -1398,18 +1358,7 @@ namespace pg
     const Point<dim>        &point,
     const Tensor<1, dim>    &normal) const
   {
-    const auto    &stress_ids = prm.boundary_conditions.neumann_stress;
-    Tensor<1, dim> t;
-    if (std::find(stress_ids.begin(), stress_ids.end(), id) == stress_ids.end())
-      {
-        for (unsigned int c = 0; c < dim; ++c)
-          t[c] = prm.traction.value(point, c);
-        return t;
-      }
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        t[i] += prm.boundary_stress.value(point, i * dim + j) * normal[j];
-    return t;
+    return loads.prescribed_traction(id, point, normal);
   }
 
 
@@ -1419,81 +1368,8 @@ namespace pg
   Problem<dim>::Implementation::has_neumann_face(
     const typename DoFHandler<dim>::active_cell_iterator &cell) const
   {
-    for (const unsigned int f : cell->face_indices())
-      if (cell->face(f)->at_boundary() &&
-          is_neumann(cell->face(f)->boundary_id()))
-        return true;
-    return false;
+    return loads.has_neumann_face(cell);
   }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::add_face_tractions(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    FEFaceValues<dim>                                    &fe_face_values,
-    Vector<double>                                       &residual) const
-  {
-    for (const unsigned int face : cell->face_indices())
-      if (cell->face(face)->at_boundary() &&
-          is_neumann(cell->face(face)->boundary_id()))
-        {
-          fe_face_values.reinit(
-            typename Triangulation<dim>::active_cell_iterator(cell),
-            face);
-          for (const unsigned int q : fe_face_values.quadrature_point_indices())
-            {
-              const Tensor<1, dim> f =
-                prescribed_traction(cell->face(face)->boundary_id(),
-                                    fe_face_values.quadrature_point(q),
-                                    fe_face_values.normal_vector(q));
-              for (unsigned int b = 0; b < cell->n_vertices(); ++b)
-                for (unsigned int c = 0; c < dim; ++c)
-                  residual(b * dim + c) -= f[c] *
-                                           fe_face_values.shape_value(b, q) *
-                                           fe_face_values.JxW(q);
-            }
-        }
-  }
-
-
-
-  namespace
-  {
-    /** Whether a local vector (and matrix) has only finite entries. */
-    bool
-    all_finite(const Vector<double> &v, const FullMatrix<double> *m)
-    {
-      for (const double x : v)
-        if (!std::isfinite(x))
-          return false;
-      if (m == nullptr || m->m() == 0 || m->n() == 0)
-        return true;
-      // the entries are contiguous; x * 0 is NaN exactly for NaN and inf,
-      // and a raw loop keeps this cheap in Debug builds (CPD families hold
-      // 10^5 entries and more)
-      const double     *entries = &(*m)(0, 0);
-      const std::size_t n       = std::size_t(m->m()) * m->n();
-      double            sum     = 0;
-      for (std::size_t e = 0; e < n; ++e)
-        sum += entries[e] * 0.;
-      return sum == 0.;
-    }
-
-    /** The message for a NaN or inf in an element's residual or tangent. */
-    template <int dim>
-    std::string
-    non_finite_message(const std::string &element,
-                       const Point<dim>  &where,
-                       const std::string &hint)
-    {
-      std::ostringstream s;
-      s << "NaN or inf in the residual or tangent of " << element << " at ("
-        << where << "). " << hint;
-      return s.str();
-    }
-  } // namespace
 
 
 
@@ -1502,172 +1378,29 @@ namespace pg
   Problem<dim>::Implementation::assemble(const bool with_matrix)
   {
     Timer timer;
-    if (with_matrix)
-      matrix = 0;
-    rhs   = 0;
-    force = 0;
-    failure.clear();
-    const auto &body_force = prm.body_force;
-
-    const auto copier = [&](const Copy &copy) {
-      if (copy.dofs.empty())
-        return;
-      Vector<double> minus_residual(copy.residual);
-      minus_residual *= -1.;
-      if (copy.with_matrix)
-        zero_constraints.distribute_local_to_global(copy.matrix,
-                                                    minus_residual,
-                                                    copy.dofs,
-                                                    matrix,
-                                                    rhs);
-      else
-        zero_constraints.distribute_local_to_global(minus_residual,
-                                                    copy.dofs,
-                                                    rhs);
-      force.add(copy.dofs, copy.residual);
-    };
-    const auto record_failure = [&](const std::exception &e) {
-      // a deal.II exception's own message, without the source location
-      std::string       message = e.what();
-      const auto *const exc     = dynamic_cast<const ExceptionBase *>(&e);
-      if (exc != nullptr)
-        {
-          std::ostringstream info;
-          exc->print_info(info);
-          message = Utilities::trim(info.str());
-        }
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (failure.empty())
-        failure = message;
-    };
-
-    Timer loop_timer;
-    using CellIterator = typename std::vector<
-      typename DoFHandler<dim>::active_cell_iterator>::const_iterator;
-    WorkStream::run(
-      owned_fe_cells.cbegin(),
-      owned_fe_cells.cend(),
-      [&](const CellIterator &it, Scratch<dim> &scratch, Copy &copy) {
-        copy.dofs.clear();
-        try
-          {
-            const auto &cell = *it;
-            scratch.fe_values.reinit(
-              typename Triangulation<dim>::active_cell_iterator(cell));
-            fill_q1_table(scratch.fe_values, scratch.table);
-            const unsigned int n = cell->n_vertices();
-            copy.dofs.resize(n * dim);
-            cell->get_dof_indices(copy.dofs);
-            scratch.y.resize(n);
-            for (unsigned int b = 0; b < n; ++b)
-              for (unsigned int c = 0; c < dim; ++c)
-                scratch.y[b][c] = cell->vertex(b)[c] - cell->vertex(0)[c] +
-                                  u_full[copy.dofs[b * dim + c]];
-            copy.with_matrix = with_matrix;
-            assemble_element(scratch.table,
-                             scratch.y,
-                             *material,
-                             copy.residual,
-                             with_matrix ? &copy.matrix : nullptr);
-
-            // body force and dead traction on finite element cells
-            Vector<double> f(dim);
-            if (!prm.zero_body_force)
-              for (const unsigned int q :
-                   scratch.fe_values.quadrature_point_indices())
-                {
-                  body_force.vector_value(scratch.fe_values.quadrature_point(q),
-                                          f);
-                  for (unsigned int b = 0; b < n; ++b)
-                    for (unsigned int c = 0; c < dim; ++c)
-                      copy.residual(b * dim + c) -=
-                        f(c) * scratch.fe_values.shape_value(b, q) *
-                        scratch.fe_values.JxW(q);
-                }
-            add_face_tractions(cell, scratch.fe_face_values, copy.residual);
-            if (!all_finite(copy.residual,
-                            with_matrix ? &copy.matrix : nullptr))
-              throw std::runtime_error(non_finite_message(
-                "Q1 cell " + std::to_string(cell->active_cell_index()),
-                cell->center(),
-                "Check the 'Traction', 'Body force' and 'Prescribed "
-                "displacement' functions, the material, and the cell "
-                "(degenerate or inverted)."));
-          }
-        catch (const std::exception &e)
-          {
-            copy.dofs.clear();
-            record_failure(e);
-          }
-      },
-      copier,
-      Scratch<dim>(fe_scalar),
-      Copy());
-
+    failure =
+      assembler->assemble(u_full,
+                          with_matrix ? &matrix : nullptr,
+                          rhs,
+                          force,
+                          [this](Assembler<dim> &a) { add_particle_loads(a); });
     auto &cost = summary.assembly_cost;
     if (with_matrix)
       {
         ++cost.n_assemblies;
-        cost.fe_seconds += loop_timer.wall_time();
+        cost.fe_seconds     = assembler->tangent_seconds()[0];
+        cost.family_seconds = assembler->tangent_seconds()[1];
       }
-    loop_timer.restart();
-    using FamilyIterator = std::vector<unsigned int>::const_iterator;
-    std::vector<unsigned int> family_index(owned_families.size());
-    for (unsigned int f = 0; f < family_index.size(); ++f)
-      family_index[f] = f;
-    WorkStream::run(
-      family_index.cbegin(),
-      family_index.cend(),
-      [&](const FamilyIterator &it, Scratch<dim> &scratch, Copy &copy) {
-        copy.dofs.clear();
-        try
-          {
-            const unsigned int k       = owned_families[*it];
-            const auto         members = families.members(k);
-            const unsigned int n       = members.size();
-            copy.dofs.resize(n * dim);
-            scratch.y.resize(n);
-            for (unsigned int b = 0; b < n; ++b)
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  copy.dofs[b * dim + c] = particles.dof(members[b], c);
-                  scratch.y[b][c]        = particles.position(members[b])[c] -
-                                    particles.position(k)[c] +
-                                    u_full[copy.dofs[b * dim + c]];
-                }
-            copy.with_matrix = with_matrix;
-            if (cpd)
-              cpd->assemble(k,
-                            scratch.y,
-                            copy.residual,
-                            with_matrix ? &copy.matrix : nullptr);
-            else
-              assemble_element(family_tables[*it],
-                               scratch.y,
-                               *material,
-                               copy.residual,
-                               with_matrix ? &copy.matrix : nullptr);
-            if (!all_finite(copy.residual,
-                            with_matrix ? &copy.matrix : nullptr))
-              throw std::runtime_error(non_finite_message(
-                "the family of particle " + std::to_string(k),
-                particles.position(k),
-                "Coincident particles (e.g. unmerged mesh vertices), an "
-                "empty or degenerate family, or a NaN in the prescribed "
-                "displacement make it."));
-          }
-        catch (const std::exception &e)
-          {
-            copy.dofs.clear();
-            record_failure(e);
-          }
-      },
-      copier,
-      Scratch<dim>(fe_scalar),
-      Copy());
-    if (with_matrix)
-      cost.family_seconds += loop_timer.wall_time();
+    time_assembly += timer.wall_time();
+  }
 
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::add_particle_loads(
+    Assembler<dim> &assembler) const
+  {
     // Particle loads: the body force V^k rho_0 b and, with tractions through
     // the test functions, T_b c_b with c_b the area of boundary part b in
     // the unit-stress residual d^k (section 8.2, eqs. 4.32-4.35).
@@ -1691,7 +1424,7 @@ namespace pg
           }
         else
           {
-            body_force.vector_value(particles.position(k), f);
+            loads.body_force(particles.position(k), f);
             for (unsigned int c = 0; c < dim; ++c)
               local(c) += particles.volume(k) * f(c);
           }
@@ -1712,48 +1445,39 @@ namespace pg
                 for (unsigned int c = 0; c < dim; ++c)
                   local(c) += a * t[c];
               }
-        if (!all_finite(local, nullptr) && failure.empty())
-          failure =
-            non_finite_message("the load of particle " + std::to_string(k),
-                               particles.position(k),
-                               "Check the 'Traction' and 'Body "
-                               "force' functions.");
+        if (!all_finite(local))
+          assembler.record_failure(Assembler<dim>::non_finite_message(
+            "the load of particle " + std::to_string(k),
+            particles.position(k),
+            "Check the 'Traction' and 'Body force' functions."));
         for (unsigned int c = 0; c < dim; ++c)
           dofs[c] = particles.dof(k, c);
-        zero_constraints.distribute_local_to_global(local, dofs, rhs);
-        local *= -1.;
-        force.add(dofs, local);
+        assembler.add_load(local, dofs);
       }
     // 'geometry': the FE-consistent load on the meshfree boundary faces.
-    {
-      Scratch<dim> scratch(fe_scalar);
-      Copy         copy;
-      for (const auto &cell : owned_meshfree_neumann_cells)
-        {
-          copy.dofs.resize(fe.n_dofs_per_cell());
-          cell->get_dof_indices(copy.dofs);
-          copy.residual.reinit(copy.dofs.size());
-          copy.with_matrix = false;
-          add_face_tractions(cell, scratch.fe_face_values, copy.residual);
-          if (!all_finite(copy.residual, nullptr) && failure.empty())
-            failure =
-              non_finite_message("the traction on meshfree cell " +
-                                   std::to_string(cell->active_cell_index()),
-                                 cell->center(),
-                                 "Check the 'Traction' function.");
-          copier(copy);
-        }
-    }
-
-    if (with_matrix)
-      matrix.compress(VectorOperation::add);
-    rhs.compress(VectorOperation::add);
-    force.compress(VectorOperation::add);
-    if (failure.empty() && !std::isfinite(rhs.l2_norm()))
-      failure = "NaN or inf in the assembled residual (none in the "
-                "elements' own contributions: check the constraints and "
-                "'Prescribed displacement').";
-    time_assembly += timer.wall_time();
+    if (owned_meshfree_neumann_cells.empty())
+      return;
+    FEFaceValues<dim> fe_face_values(fe_scalar,
+                                     QGauss<dim - 1>(2),
+                                     update_values | update_quadrature_points |
+                                       update_normal_vectors |
+                                       update_JxW_values);
+    LocalSystem       local_system;
+    local_system.with_matrix = false;
+    for (const auto &cell : owned_meshfree_neumann_cells)
+      {
+        local_system.dofs.resize(fe.n_dofs_per_cell());
+        cell->get_dof_indices(local_system.dofs);
+        local_system.residual.reinit(local_system.dofs.size());
+        loads.add_face_tractions(cell, fe_face_values, local_system.residual);
+        if (!all_finite(local_system.residual))
+          assembler.record_failure(Assembler<dim>::non_finite_message(
+            "the traction on meshfree cell " +
+              std::to_string(cell->active_cell_index()),
+            cell->center(),
+            "Check the 'Traction' function."));
+        assembler.distribute(local_system);
+      }
   }
 
 
@@ -2057,14 +1781,16 @@ namespace pg
     if (!owned_fe_cells.empty())
       {
         // every Q1 cell has the same table size
-        Scratch<dim> scratch(fe_scalar);
-        scratch.fe_values.reinit(
-          typename Triangulation<dim>::active_cell_iterator(
-            owned_fe_cells.front()));
-        fill_q1_table(scratch.fe_values, scratch.table);
-        cost.fe_entries =
-          owned_fe_cells.size() * tangent_entries(scratch.table);
-        cost.fe_flops = owned_fe_cells.size() * tangent_flops(scratch.table);
+        FEValues<dim>        fe_values(fe_scalar,
+                                QGauss<dim>(2),
+                                update_gradients | update_values |
+                                  update_quadrature_points | update_JxW_values);
+        QuadratureTable<dim> table;
+        fe_values.reinit(typename Triangulation<dim>::active_cell_iterator(
+          owned_fe_cells.front()));
+        fill_q1_table(fe_values, table);
+        cost.fe_entries = owned_fe_cells.size() * tangent_entries(table);
+        cost.fe_flops   = owned_fe_cells.size() * tangent_flops(table);
       }
     if (cpd)
       for (const unsigned int k : owned_families)
