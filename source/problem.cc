@@ -2,6 +2,7 @@
 #include <pg/analysis/inf_sup.h>
 #include <pg/assembly/assembler.h>
 #include <pg/assembly/loads.h>
+#include <pg/assembly/mass_matrix.h>
 #include <pg/base/exceptions.h>
 #include <pg/base/formulation_code.h>
 #include <pg/base/linear_algebra.h>
@@ -24,6 +25,8 @@
 #include <pg/solvers/load_stepper.h>
 #include <pg/solvers/newton_solver.h>
 #include <pg/solvers/time_integration.h>
+#include <pg/solvers/time_integrator.h>
+#include <pg/solvers/time_stepper.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -57,7 +60,7 @@
 namespace pg
 {
   template <int dim>
-  class Problem<dim>::Implementation
+  class Problem<dim>::Implementation : public MechanicalSystem
   {
   public:
     Implementation(const Parameters::AllParameters<dim> &parameters,
@@ -98,7 +101,93 @@ namespace pg
      * reduced over the ranks), |R|, solve and update.
      */
     NewtonSolver::Operations
-    newton_operations();
+    newton_operations() override;
+
+    /** @name The MechanicalSystem of the time integrators */
+    /** @{ */
+    MPI_Comm
+    communicator() const override
+    {
+      return comm;
+    }
+
+    const IndexSet &
+    locally_owned_dofs() const override
+    {
+      return owned_dofs;
+    }
+
+    LinearAlgebra::Vector &
+    displacement() override
+    {
+      return solution_owned;
+    }
+
+    void
+    displacement_changed() override
+    {
+      update_full_solution();
+    }
+
+    void
+    set_time(const double t) override
+    {
+      set_load_factor(t);
+      if (prm.boundary_conditions.prescribes_values())
+        make_constraints(constraints, false);
+    }
+
+    void
+    apply_dirichlet_values() override
+    {
+      constraints.distribute(solution_owned);
+    }
+
+    const AffineConstraints<double> &
+    homogeneous_constraints() const override
+    {
+      return zero_constraints;
+    }
+
+    std::string
+    assemble_residual(const bool with_matrix) override
+    {
+      assemble(with_matrix);
+      return failure;
+    }
+
+    LinearAlgebra::Vector &
+    residual() override
+    {
+      return rhs;
+    }
+
+    const LinearAlgebra::Vector &
+    unbalanced_force() const override
+    {
+      return force;
+    }
+
+    LinearAlgebra::SparseMatrix &
+    tangent() override
+    {
+      return matrix;
+    }
+
+    void
+    external_force(LinearAlgebra::Vector &f_ext) override
+    {
+      compute_external_force(f_ext);
+    }
+
+    void
+    solve(const LinearAlgebra::SparseMatrix &A,
+          LinearAlgebra::Vector             &x,
+          const LinearAlgebra::Vector       &b) override
+    {
+      solve_linear_system(prm.linear_solver, dof_handler, A, x, b);
+    }
+    /** @} */
 
     void
     update_full_solution();
@@ -227,17 +316,6 @@ namespace pg
     run_dynamics();
 
     /**
-     * The lumped mass rho_0 int N_k of every DoF over all cells
-     * (lumped_mass) and its diagonal condensed with zero_constraints
-     * (inverse_mass: 1/m at free DoFs, 0 at constrained ones); for
-     * @p consistent also the Newmark mass matrices: consistent Q1 mass on
-     * the finite element cells, rho_0 V^k on the particles, unconstrained
-     * (mass_matrix) and condensed (condensed_mass).
-     */
-    void
-    assemble_mass(const bool consistent);
-
-    /**
      * f_ext at the time of the parsed functions: the loads are dead, so
      * f_ext = -(f_int - f_ext)(u = 0), one residual assembly (none without
      * body force and Neumann boundaries). Overwrites rhs and force.
@@ -249,21 +327,7 @@ namespace pg
     void
     add_condensed(const LinearAlgebra::Vector &y,
                   const double                 factor,
-                  LinearAlgebra::Vector       &target) const;
-
-    /**
-     * One Newmark step to @p t_new from (u, v, a) = (solution_owned, @p v,
-     * @p a): Newton on M a(u) + f_int(u) - f_ext = 0. On success
-     * solution_owned, @p v and @p a hold the new state, @p f_ext the new
-     * external force, and @p iterations the Newton iterations.
-     */
-    bool
-    newmark_step(const double           t_new,
-                 const double           dt,
-                 LinearAlgebra::Vector &v,
-                 LinearAlgebra::Vector &a,
-                 LinearAlgebra::Vector &f_ext,
-                 unsigned int          &iterations);
+                  LinearAlgebra::Vector       &target) const override;
 
     /**
      * particles.txt: position, displacement, deformation gradient @p F
@@ -280,9 +344,9 @@ namespace pg
     void
     add_energy_statistics(const double t);
 
-    LinearAlgebra::Vector       lumped_mass, inverse_mass;
-    LinearAlgebra::SparseMatrix mass_matrix, condensed_mass;
-    TimeIntegration::Energies   energies;
+    /** The masses of the time integrators (run_dynamics). */
+    MassMatrices              masses;
+    TimeIntegration::Energies energies;
     /** RMS of the initial particle displacement about its mean. */
     double disorder_reference = 0;
     /**
@@ -2538,89 +2602,6 @@ namespace pg
 
   template <int dim>
   void
-  Problem<dim>::Implementation::assemble_mass(const bool consistent)
-  {
-    const double rho = prm.material.density;
-    // Lumped: every rank sums over all cells (the shared triangulation
-    // knows them), so the full vector needs no communication.
-    Vector<double>     m(dof_handler.n_dofs());
-    FEValues<dim>      fe_values(fe_scalar,
-                            QGauss<dim>(2),
-                            update_values | update_JxW_values);
-    const unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    FullMatrix<double>                   local(dofs.size(), dofs.size());
-    if (consistent)
-      {
-        mass_matrix.copy_from(matrix);
-        mass_matrix = 0;
-        condensed_mass.copy_from(matrix);
-        condensed_mass = 0;
-      }
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        fe_values.reinit(
-          typename Triangulation<dim>::active_cell_iterator(cell));
-        cell->get_dof_indices(dofs);
-        local             = 0;
-        const bool lumped = !consistent || meshfree[cell->active_cell_index()];
-        for (unsigned int a = 0; a < n_vertices; ++a)
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              const double w =
-                rho * fe_values.shape_value(a, q) * fe_values.JxW(q);
-              for (unsigned int c = 0; c < dim; ++c)
-                m[dofs[a * dim + c]] += w;
-              if (lumped)
-                for (unsigned int c = 0; c < dim; ++c)
-                  local(a * dim + c, a * dim + c) += w;
-              else
-                for (unsigned int b = 0; b < n_vertices; ++b)
-                  for (unsigned int c = 0; c < dim; ++c)
-                    local(a * dim + c, b * dim + c) +=
-                      w * fe_values.shape_value(b, q);
-            }
-        if (consistent && cell->is_locally_owned())
-          {
-            mass_matrix.add(dofs, local);
-            zero_constraints.distribute_local_to_global(local,
-                                                        dofs,
-                                                        condensed_mass);
-          }
-      }
-    if (consistent)
-      {
-        mass_matrix.compress(VectorOperation::add);
-        condensed_mass.compress(VectorOperation::add);
-      }
-
-    // The diagonal of C^T M C for the homogeneous constraints.
-    Vector<double> m_condensed(m);
-    for (const auto &line : zero_constraints.get_lines())
-      {
-        for (const auto &[j, c] : line.entries)
-          m_condensed[j] += c * c * m[line.index];
-        m_condensed[line.index] = 0;
-      }
-    lumped_mass.reinit(owned_dofs, comm);
-    inverse_mass.reinit(owned_dofs, comm);
-    for (const auto i : owned_dofs)
-      {
-        AssertThrow(m[i] > 0,
-                    ExcBadParameter("Material/Density",
-                                    std::to_string(rho),
-                                    "dynamics needs a positive density."));
-        lumped_mass(i)  = m[i];
-        inverse_mass(i) = m_condensed[i] > 0 ? 1. / m_condensed[i] : 0.;
-      }
-    lumped_mass.compress(VectorOperation::insert);
-    inverse_mass.compress(VectorOperation::insert);
-  }
-
-
-
-  template <int dim>
-  void
   Problem<dim>::Implementation::compute_external_force(
     LinearAlgebra::Vector &f_ext)
   {
@@ -2658,67 +2639,6 @@ namespace pg
           z(j) += c * ghosted(line.index);
     z.compress(VectorOperation::insert);
     target.add(factor, z);
-  }
-
-
-
-  template <int dim>
-  bool
-  Problem<dim>::Implementation::newmark_step(const double           t_new,
-                                             const double           dt,
-                                             LinearAlgebra::Vector &v,
-                                             LinearAlgebra::Vector &a,
-                                             LinearAlgebra::Vector &f_ext,
-                                             unsigned int          &iterations)
-  {
-    const double beta = prm.time.beta, gamma = prm.time.gamma;
-    const double c0 = 1. / (beta * dt * dt);
-    set_load_factor(t_new);
-    compute_external_force(f_ext);
-    if (prm.boundary_conditions.prescribes_values())
-      make_constraints(constraints, false);
-    // the predictor u~ = u + dt v + dt^2 (1/2 - beta) a, i.e. a_new = 0
-    LinearAlgebra::Vector u_tilde(solution_owned);
-    u_tilde.add(dt, v, dt * dt * (0.5 - beta), a);
-    solution_owned = u_tilde;
-    constraints.distribute(solution_owned);
-    update_full_solution();
-
-    // Newton on the effective residual: the static one plus the inertia
-    // M a_new, a_new = c0 (u - u~); the tangent gains c0 M.
-    LinearAlgebra::Vector    a_new(owned_dofs, comm), Ma(owned_dofs, comm);
-    double                   static_norm = 0;
-    NewtonSolver::Operations operations  = newton_operations();
-    operations.assemble                  = [&]() -> std::string {
-      assemble(true);
-      if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0)
-        return failure.empty() ? "the assembly failed on another rank" :
-                                                  failure;
-      a_new = solution_owned;
-      a_new -= u_tilde;
-      a_new *= c0;
-      mass_matrix.vmult(Ma, a_new);
-      static_norm = rhs.l2_norm();
-      add_condensed(Ma, -1., rhs);
-      matrix.add(c0, condensed_mass);
-      return "";
-    };
-    operations.reference = [&](const double first) {
-      return std::max({first, static_norm, Ma.l2_norm()});
-    };
-    const NewtonSolver::Result result =
-      NewtonSolver(prm.newton).solve(operations);
-    summary.newton_residuals_last_step = result.residuals;
-    iterations                         = result.updates;
-    last_failure                       = result.failure;
-    if (!result.converged())
-      {
-        NewtonSolver::report(result, pcout);
-        return false;
-      }
-    v.add(dt * (1. - gamma), a, dt * gamma, a_new);
-    a = a_new;
-    return true;
   }
 
 
@@ -2793,16 +2713,15 @@ namespace pg
   void
   Problem<dim>::Implementation::run_dynamics()
   {
-    const auto  &time      = prm.time;
-    const bool   explicit_ = (time.integrator == "leapfrog");
-    const double T         = time.end_time;
-    auto        &d         = summary.dynamics;
-    d.integrator           = time.integrator;
+    const auto &time      = prm.time;
+    const bool  explicit_ = (time.integrator == "leapfrog");
+    auto       &d         = summary.dynamics;
+    d.integrator          = time.integrator;
 
     // Initial conditions at the vertices; the Dirichlet values of t = 0
     // win, and the constrained DoFs start at rest.
     set_load_factor(0.);
-    LinearAlgebra::Vector v(owned_dofs, comm), a(owned_dofs, comm);
+    LinearAlgebra::Vector v(owned_dofs, comm);
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int vertex : cell->vertex_indices())
         for (unsigned int c = 0; c < dim; ++c)
@@ -2832,229 +2751,56 @@ namespace pg
           }
         disorder_reference = TimeIntegration::rms_about_mean(u0, V);
       }
-    // 1 at the constrained DoFs
-    LinearAlgebra::Vector constrained(owned_dofs, comm);
-    for (const auto i : owned_dofs)
-      if (zero_constraints.is_constrained(i))
-        constrained(i) = 1.;
-    constrained.compress(VectorOperation::insert);
-
-    // The stable step from the tangent of the initial state.
-    assemble(true);
-    AssertThrow(failure.empty(), ExcMessage(failure));
-    assemble_mass(!explicit_);
-    const double omega2 =
-      TimeIntegration::largest_eigenvalue(matrix, inverse_mass);
-    const double dt_stable = omega2 > 0 ? 2. / std::sqrt(omega2) : T;
-    d.stable_time_step     = dt_stable;
-    {
-      std::ostringstream line;
-      line << std::setprecision(4) << "  time integrator: " << time.integrator
-           << ", stable leapfrog step 2/omega_max = " << dt_stable
-           << " (omega_max = " << std::sqrt(omega2) << ")";
-      pcout << line.str() << std::endl;
-    }
-    const auto text = [](const double x) {
-      std::ostringstream s;
-      s << std::setprecision(4) << x;
-      return s.str();
-    };
+    assemble_masses(dof_handler,
+                    meshfree,
+                    zero_constraints,
+                    matrix,
+                    prm.material.density,
+                    !explicit_,
+                    masses);
+    std::unique_ptr<TimeIntegrator> integrator;
     if (explicit_)
-      AssertThrow(time.time_step <= dt_stable,
-                  ExcBadParameter("Time/Time step",
-                                  text(time.time_step),
-                                  "it exceeds the stable step of leapfrog, "
-                                  "2/omega_max = " +
-                                    text(dt_stable) +
-                                    " (estimated from the tangent of the "
-                                    "initial state): use a smaller step, or "
-                                    "0 for the automatic one."));
-    double dt =
-      time.time_step > 0 ? time.time_step : time.safety_factor * dt_stable;
-    const unsigned int n_steps =
-      std::max(1., std::ceil(T / dt - 1e-9 * T / dt));
-    dt          = T / n_steps;
-    d.n_steps   = n_steps;
-    d.time_step = dt;
-    {
-      std::ostringstream line;
-      line << std::setprecision(4) << "  time step " << dt << ", " << n_steps
-           << " steps to t = " << T;
-      pcout << line.str() << std::endl;
-    }
-
-    // The state at t = 0: accelerations and energies.
-    LinearAlgebra::Vector f_ext(owned_dofs, comm), f_int(owned_dofs, comm),
-      Ma(owned_dofs, comm), u_old(owned_dofs, comm), du(owned_dofs, comm),
-      r_old(owned_dofs, comm), r_new(owned_dofs, comm);
-    compute_external_force(f_ext);
-    assemble(false);
-    AssertThrow(failure.empty(), ExcMessage(failure));
-    if (explicit_)
-      {
-        a = rhs;
-        a.scale(inverse_mass);
-      }
+      integrator = std::make_unique<Leapfrog>(masses);
     else
-      {
-        a = 0;
-        solve_linear_system(prm.linear_solver,
-                            dof_handler,
-                            condensed_mass,
-                            a,
-                            rhs);
-        zero_constraints.distribute(a);
-      }
-    f_int = force;
-    f_int += f_ext;
-    // E_kin (and that of the constrained DoFs, whose change the supports
-    // pay for with lumped masses) and the reaction including inertia.
-    const auto kinetic = [&](double &constrained_part) {
-      constrained_part = 0;
-      if (!explicit_)
-        {
-          mass_matrix.vmult(Ma, v);
-          return 0.5 * (v * Ma);
-        }
-      double e = 0, e_constrained = 0;
-      for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
-        {
-          const double ei =
-            0.5 * lumped_mass.begin()[i] * v.begin()[i] * v.begin()[i];
-          e += ei;
-          e_constrained += constrained.begin()[i] * ei;
-        }
-      constrained_part = Utilities::MPI::sum(e_constrained, comm);
-      return Utilities::MPI::sum(e, comm);
+      integrator =
+        std::make_unique<Newmark>(masses, prm.time, prm.newton, pcout);
+
+    TimeStepper::Operations operations;
+    operations.started = [&](const TimeStepper::Result &r) {
+      d.stable_time_step = r.stable_time_step;
+      d.n_steps          = r.n_steps;
+      d.time_step        = r.time_step;
+      summary.load_steps = 0;
+      summary.converged  = true;
     };
-    const auto reaction = [&](LinearAlgebra::Vector &r) {
-      // (f_int - f_ext + M a) at the constrained DoFs (Newmark), f_int -
-      // f_ext there (leapfrog: the inertia enters through E_kin)
-      r = force;
-      if (!explicit_)
-        {
-          mass_matrix.vmult(Ma, a);
-          r += Ma;
-        }
-      r.scale(constrained);
+    operations.step_done = [&](const unsigned int step,
+                               const unsigned int iterations) {
+      summary.newton_iterations += iterations;
+      summary.load_steps                 = step;
+      summary.newton_residuals_last_step = integrator->last_residuals;
     };
-    double kinetic_constrained = 0;
-    energies                   = TimeIntegration::Energies();
-    energies.kinetic           = kinetic(kinetic_constrained);
-    energies.initial_kinetic   = energies.kinetic;
-    reaction(r_old);
-
-    const auto progress = [&](const unsigned int step, const double t) {
-      std::ostringstream line;
-      line << std::setprecision(4) << "  t = " << t << ", step " << step
-           << ": E_kin = " << energies.kinetic
-           << ", W_int = " << energies.internal_work
-           << ", W_ext = " << energies.external_work
-           << ", W_supports = " << energies.support_work;
-      const double scale = std::max({std::abs(energies.kinetic),
-                                     std::abs(energies.internal_work),
-                                     std::abs(energies.initial_kinetic),
-                                     std::abs(energies.external_work)});
-      line << std::scientific << std::setprecision(1) << ", balance/max(E) = "
-           << (scale > 0 ? energies.balance() / scale : 0.);
-      if (!summary.dynamics.disorder.empty())
-        line << std::defaultfloat << std::setprecision(3)
-             << ", disorder = " << summary.dynamics.disorder.back();
-      pcout << line.str() << std::endl;
+    operations.output = [&](const unsigned int step,
+                            const double       t,
+                            const unsigned int iterations) {
+      postprocess_timer.start();
+      postprocess(step, t, iterations);
+      postprocess_timer.stop();
     };
-
-    summary.load_steps = 0;
-    summary.converged  = true;
-    postprocess_timer.start();
-    postprocess(0, 0., 0);
-    postprocess_timer.stop();
-    progress(0, 0.);
-    const double interval    = time.output_interval;
-    double       next_output = interval;
-
-    double t = 0;
-    for (unsigned int step = 1; step <= n_steps; ++step)
-      {
-        const double t_new      = (step == n_steps ? T : step * dt);
-        unsigned int iterations = 0;
-        u_old                   = solution_owned;
-        const double          kinetic_constrained_old = kinetic_constrained;
-        LinearAlgebra::Vector f_ext_old(f_ext), f_int_old(f_int);
-        if (explicit_)
-          {
-            // velocity Verlet: v += dt/2 a; u += dt v; a(u); v += dt/2 a
-            v.add(0.5 * dt, a);
-            solution_owned.add(dt, v);
-            set_load_factor(t_new);
-            if (prm.boundary_conditions.prescribes_values())
-              make_constraints(constraints, false);
-            constraints.distribute(solution_owned);
-            update_full_solution();
-            compute_external_force(f_ext);
-            assemble(false);
-            AssertThrow(failure.empty(),
-                        ExcMessage("At t = " + std::to_string(t_new) + ": " +
-                                   failure));
-            a = rhs;
-            a.scale(inverse_mass);
-            v.add(0.5 * dt, a);
-            // the constrained DoFs: the difference quotient
-            du = solution_owned;
-            du -= u_old;
-            for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
-              if (constrained.begin()[i] > 0)
-                v.begin()[i] = du.begin()[i] / dt;
-          }
-        else if (!newmark_step(t_new, dt, v, a, f_ext, iterations))
-          {
-            solution_owned = u_old;
-            update_full_solution();
-            summary.converged = false;
-            write_files(step - 1, t);
-            AssertThrow(false,
-                        ExcMessage(
-                          "The Newmark step to t = " + std::to_string(t_new) +
-                          " did not converge. Reduce 'Time step' in "
-                          "subsection 'Time', or increase 'Maximum "
-                          "iterations' in subsection 'Newton'. The results "
-                          "up to t = " +
-                          std::to_string(t) + " are in '" +
-                          prm.output.directory + "'."));
-          }
-        t = t_new;
-        summary.newton_iterations += iterations;
-        summary.load_steps = step;
-
-        // energies (trapezoidal rule)
-        du = solution_owned;
-        du -= u_old;
-        f_int = force;
-        f_int += f_ext;
-        reaction(r_new);
-        energies.kinetic = kinetic(kinetic_constrained);
-        f_int_old += f_int;
-        f_ext_old += f_ext;
-        r_old += r_new;
-        energies.internal_work += 0.5 * (f_int_old * du);
-        energies.external_work += 0.5 * (f_ext_old * du);
-        energies.support_work +=
-          0.5 * (r_old * du) + kinetic_constrained - kinetic_constrained_old;
-        r_old = r_new;
-        AssertThrow(std::isfinite(energies.kinetic),
-                    ExcMessage("The motion became unbounded at t = " +
-                               std::to_string(t) +
-                               ": reduce 'Time step' in subsection 'Time'."));
-
-        if (step == n_steps || interval == 0. || t >= next_output - 1e-9 * dt)
-          {
-            while (interval > 0. && next_output <= t + 1e-9 * dt)
-              next_output += interval;
-            postprocess_timer.start();
-            postprocess(step, t, iterations);
-            postprocess_timer.stop();
-            progress(step, t);
-          }
-      }
+    operations.give_up = [&](const unsigned int last_step, const double t) {
+      summary.converged = false;
+      write_files(last_step, t);
+    };
+    const TimeStepper::Result result =
+      TimeStepper(time, prm.output.directory, pcout)
+        .run(*this,
+             *integrator,
+             masses,
+             v,
+             energies,
+             summary.dynamics.disorder,
+             operations);
+    const unsigned int n_steps = result.n_steps;
+    const double       t       = result.final_time;
 
     std::vector<Tensor<2, dim>> F(particles.n_particles());
     for (unsigned int k = 0; k < F.size(); ++k)
