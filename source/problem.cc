@@ -1,12 +1,18 @@
 #include <pg/analysis/eigenmodes.h>
 #include <pg/analysis/inf_sup.h>
+#include <pg/assembly/assembler.h>
+#include <pg/assembly/loads.h>
+#include <pg/assembly/mass_matrix.h>
 #include <pg/base/exceptions.h>
 #include <pg/base/formulation_code.h>
 #include <pg/base/linear_algebra.h>
 #include <pg/elements/cpd_interactions.h>
+#include <pg/elements/element_group.h>
 #include <pg/elements/family_elements.h>
+#include <pg/elements/family_group.h>
 #include <pg/elements/kernel_cost.h>
 #include <pg/elements/q1_cell.h>
+#include <pg/elements/q1_cell_group.h>
 #include <pg/elements/quadrature_table.h>
 #include <pg/elements/second_order_correction.h>
 #include <pg/families/family_set.h>
@@ -16,7 +22,11 @@
 #include <pg/postprocess/output.h>
 #include <pg/problem.h>
 #include <pg/solvers/linear_solver.h>
+#include <pg/solvers/load_stepper.h>
+#include <pg/solvers/newton_solver.h>
 #include <pg/solvers/time_integration.h>
+#include <pg/solvers/time_integrator.h>
+#include <pg/solvers/time_stepper.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -50,7 +60,7 @@
 namespace pg
 {
   template <int dim>
-  class Problem<dim>::Implementation
+  class Problem<dim>::Implementation : public MechanicalSystem
   {
   public:
     Implementation(const Parameters::AllParameters<dim> &parameters,
@@ -80,11 +90,104 @@ namespace pg
     solve_step(const double t, unsigned int &iterations);
     /**
      * Solve matrix * update = rhs and add the update (with the homogeneous
-     * constraints) to the solution; false, with a message, if the linear
-     * solver does not converge.
+     * constraints) to the solution, with @p energy = update . rhs; false,
+     * with a message, if the linear solver does not converge.
      */
     bool
-    apply_newton_update();
+    apply_newton_update(double &energy);
+
+    /**
+     * Newton's operations on the static residual: assemble (failures
+     * reduced over the ranks), |R|, solve and update.
+     */
+    NewtonSolver::Operations
+    newton_operations() override;
+
+    /** @name The MechanicalSystem of the time integrators */
+    /** @{ */
+    MPI_Comm
+    communicator() const override
+    {
+      return comm;
+    }
+
+    const IndexSet &
+    locally_owned_dofs() const override
+    {
+      return owned_dofs;
+    }
+
+    LinearAlgebra::Vector &
+    displacement() override
+    {
+      return solution_owned;
+    }
+
+    void
+    displacement_changed() override
+    {
+      update_full_solution();
+    }
+
+    void
+    set_time(const double t) override
+    {
+      set_load_factor(t);
+      if (prm.boundary_conditions.prescribes_values())
+        make_constraints(constraints, false);
+    }
+
+    void
+    apply_dirichlet_values() override
+    {
+      constraints.distribute(solution_owned);
+    }
+
+    const AffineConstraints<double> &
+    homogeneous_constraints() const override
+    {
+      return zero_constraints;
+    }
+
+    std::string
+    assemble_residual(const bool with_matrix) override
+    {
+      assemble(with_matrix);
+      return failure;
+    }
+
+    LinearAlgebra::Vector &
+    residual() override
+    {
+      return rhs;
+    }
+
+    const LinearAlgebra::Vector &
+    unbalanced_force() const override
+    {
+      return force;
+    }
+
+    LinearAlgebra::SparseMatrix &
+    tangent() override
+    {
+      return matrix;
+    }
+
+    void
+    external_force(LinearAlgebra::Vector &f_ext) override
+    {
+      compute_external_force(f_ext);
+    }
+
+    void
+    solve(const LinearAlgebra::SparseMatrix &A,
+          LinearAlgebra::Vector             &x,
+          const LinearAlgebra::Vector       &b) override
+    {
+      solve_linear_system(prm.linear_solver, dof_handler, A, x, b);
+    }
+    /** @} */
 
     void
     update_full_solution();
@@ -197,14 +300,12 @@ namespace pg
       const typename DoFHandler<dim>::active_cell_iterator &cell) const;
 
     /**
-     * Subtract the FE-consistent dead traction load of the Neumann faces of
-     * @p cell from the element residual @p residual (node-major).
+     * The particle loads (the body force V^k rho_0 b and the tractions
+     * through the test functions) and the FE-consistent traction on
+     * meshfree Neumann faces: the load term of the Assembler.
      */
     void
-    add_face_tractions(
-      const typename DoFHandler<dim>::active_cell_iterator &cell,
-      FEFaceValues<dim>                                    &fe_face_values,
-      Vector<double>                                       &residual) const;
+    add_particle_loads(Assembler<dim> &assembler) const;
 
     /**
      * 'Time/Integrator' leapfrog or newmark: initial conditions, masses,
@@ -213,17 +314,6 @@ namespace pg
      */
     void
     run_dynamics();
-
-    /**
-     * The lumped mass rho_0 int N_k of every DoF over all cells
-     * (lumped_mass) and its diagonal condensed with zero_constraints
-     * (inverse_mass: 1/m at free DoFs, 0 at constrained ones); for
-     * @p consistent also the Newmark mass matrices: consistent Q1 mass on
-     * the finite element cells, rho_0 V^k on the particles, unconstrained
-     * (mass_matrix) and condensed (condensed_mass).
-     */
-    void
-    assemble_mass(const bool consistent);
 
     /**
      * f_ext at the time of the parsed functions: the loads are dead, so
@@ -237,21 +327,7 @@ namespace pg
     void
     add_condensed(const LinearAlgebra::Vector &y,
                   const double                 factor,
-                  LinearAlgebra::Vector       &target) const;
-
-    /**
-     * One Newmark step to @p t_new from (u, v, a) = (solution_owned, @p v,
-     * @p a): Newton on M a(u) + f_int(u) - f_ext = 0. On success
-     * solution_owned, @p v and @p a hold the new state, @p f_ext the new
-     * external force, and @p iterations the Newton iterations.
-     */
-    bool
-    newmark_step(const double           t_new,
-                 const double           dt,
-                 LinearAlgebra::Vector &v,
-                 LinearAlgebra::Vector &a,
-                 LinearAlgebra::Vector &f_ext,
-                 unsigned int          &iterations);
+                  LinearAlgebra::Vector       &target) const override;
 
     /**
      * particles.txt: position, displacement, deformation gradient @p F
@@ -268,9 +344,9 @@ namespace pg
     void
     add_energy_statistics(const double t);
 
-    LinearAlgebra::Vector       lumped_mass, inverse_mass;
-    LinearAlgebra::SparseMatrix mass_matrix, condensed_mass;
-    TimeIntegration::Energies   energies;
+    /** The masses of the time integrators (run_dynamics). */
+    MassMatrices              masses;
+    TimeIntegration::Energies energies;
     /** RMS of the initial particle displacement about its mean. */
     double disorder_reference = 0;
     /**
@@ -371,7 +447,14 @@ namespace pg
     void
     compute_boundary_area_weights();
 
-    std::mutex  failure_mutex;
+    /** The dead loads of 'Boundary conditions' and the body force. */
+    const Loads<dim> loads;
+    /** The element groups and the assembler over them (set up in setup()). */
+    std::unique_ptr<Q1CellGroup<dim>>  q1_cells;
+    std::unique_ptr<ElementGroup<dim>> family_group;
+    std::unique_ptr<Assembler<dim>>    assembler;
+
+    /** The first failure of the last assembly on this rank (or empty). */
     std::string failure;
     /** Why the last failed (sub)step failed, for the final message. */
     std::string last_failure;
@@ -414,6 +497,7 @@ namespace pg
          formulation.variational_consistency))
     , traction_from_exact_stress(
         parameters.boundary_conditions.particle_traction_area == "exact stress")
+    , loads(parameters)
   {
     AssertThrow(!(parameters.linear_solver.type == "cg" &&
                   (formulation.method == FormulationCode::Method::ppg1 ||
@@ -571,32 +655,26 @@ namespace pg
     make_constraints(constraints, false);
     make_constraints(zero_constraints, true);
 
-    DynamicSparsityPattern               dsp(relevant_dofs);
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : owned_fe_cells)
-      {
-        cell->get_dof_indices(dofs);
-        zero_constraints.add_entries_local_to_global(dofs, dsp, true);
-      }
-    for (const unsigned int k : owned_families)
-      {
-        const auto members = families.members(k);
-        dofs.resize(members.size() * dim);
-        for (unsigned int a = 0; a < members.size(); ++a)
-          for (unsigned int c = 0; c < dim; ++c)
-            dofs[a * dim + c] = particles.dof(members[a], c);
-        if (cpd)
-          {
-            // one horizon: particle k couples to its neighbours only (the
-            // zero blocks of the family's local matrix are not added)
-            const std::vector<types::global_dof_index> row(dofs.begin(),
-                                                           dofs.begin() + dim);
-            zero_constraints.add_entries_local_to_global(row, dofs, dsp, true);
-            zero_constraints.add_entries_local_to_global(dofs, row, dsp, true);
-          }
-        else
-          zero_constraints.add_entries_local_to_global(dofs, dsp, true);
-      }
+    // The element groups: Q1 cells first, then the families (PG or CPD).
+    q1_cells =
+      std::make_unique<Q1CellGroup<dim>>(owned_fe_cells, *material, loads);
+    if (cpd)
+      family_group = std::make_unique<CpdGroup<dim>>(owned_families,
+                                                     families,
+                                                     particles,
+                                                     *cpd);
+    else
+      family_group = std::make_unique<FamilyGroup<dim>>(owned_families,
+                                                        families,
+                                                        particles,
+                                                        family_tables,
+                                                        *material);
+    assembler = std::make_unique<Assembler<dim>>(
+      zero_constraints,
+      std::vector<ElementGroup<dim> *>{q1_cells.get(), family_group.get()});
+
+    DynamicSparsityPattern dsp(relevant_dofs);
+    assembler->add_sparsity(dsp);
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                owned_dofs,
                                                comm,
@@ -1328,56 +1406,11 @@ namespace pg
 
 
 
-  namespace
-  {
-    template <int dim>
-    struct Scratch
-    {
-      Scratch(const FiniteElement<dim> &fe_scalar)
-        : fe_values(fe_scalar,
-                    QGauss<dim>(2),
-                    update_gradients | update_values |
-                      update_quadrature_points | update_JxW_values)
-        , fe_face_values(fe_scalar,
-                         QGauss<dim - 1>(2),
-                         update_values | update_quadrature_points |
-                           update_normal_vectors | update_JxW_values)
-      {}
-      Scratch(const Scratch &other)
-        : fe_values(other.fe_values.get_fe(),
-                    other.fe_values.get_quadrature(),
-                    other.fe_values.get_update_flags())
-        , fe_face_values(other.fe_face_values.get_fe(),
-                         other.fe_face_values.get_quadrature(),
-                         other.fe_face_values.get_update_flags())
-      {}
-      FEValues<dim>               fe_values;
-      FEFaceValues<dim>           fe_face_values;
-      QuadratureTable<dim>        table;
-      std::vector<Tensor<1, dim>> y;
-    };
-
-    struct Copy
-    {
-      std::vector<types::global_dof_index> dofs;
-      FullMatrix<double>                   matrix;
-      /** f_int - f_ext of the element */
-      Vector<double> residual;
-      bool           with_matrix = true;
-    };
-  } // namespace
-
-
-
   template <int dim>
   bool
   Problem<dim>::Implementation::is_neumann(const types::boundary_id id) const
   {
-    const auto &bc = prm.boundary_conditions;
-    return std::find(bc.neumann.begin(), bc.neumann.end(), id) !=
-             bc.neumann.end() ||
-           std::find(bc.neumann_stress.begin(), bc.neumann_stress.end(), id) !=
-             bc.neumann_stress.end();
+    return loads.is_neumann(id);
   }
 
 
@@ -1389,18 +1422,7 @@ namespace pg
     const Point<dim>        &point,
     const Tensor<1, dim>    &normal) const
   {
-    const auto    &stress_ids = prm.boundary_conditions.neumann_stress;
-    Tensor<1, dim> t;
-    if (std::find(stress_ids.begin(), stress_ids.end(), id) == stress_ids.end())
-      {
-        for (unsigned int c = 0; c < dim; ++c)
-          t[c] = prm.traction.value(point, c);
-        return t;
-      }
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        t[i] += prm.boundary_stress.value(point, i * dim + j) * normal[j];
-    return t;
+    return loads.prescribed_traction(id, point, normal);
   }
 
 
@@ -1410,81 +1432,8 @@ namespace pg
   Problem<dim>::Implementation::has_neumann_face(
     const typename DoFHandler<dim>::active_cell_iterator &cell) const
   {
-    for (const unsigned int f : cell->face_indices())
-      if (cell->face(f)->at_boundary() &&
-          is_neumann(cell->face(f)->boundary_id()))
-        return true;
-    return false;
+    return loads.has_neumann_face(cell);
   }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::add_face_tractions(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    FEFaceValues<dim>                                    &fe_face_values,
-    Vector<double>                                       &residual) const
-  {
-    for (const unsigned int face : cell->face_indices())
-      if (cell->face(face)->at_boundary() &&
-          is_neumann(cell->face(face)->boundary_id()))
-        {
-          fe_face_values.reinit(
-            typename Triangulation<dim>::active_cell_iterator(cell),
-            face);
-          for (const unsigned int q : fe_face_values.quadrature_point_indices())
-            {
-              const Tensor<1, dim> f =
-                prescribed_traction(cell->face(face)->boundary_id(),
-                                    fe_face_values.quadrature_point(q),
-                                    fe_face_values.normal_vector(q));
-              for (unsigned int b = 0; b < cell->n_vertices(); ++b)
-                for (unsigned int c = 0; c < dim; ++c)
-                  residual(b * dim + c) -= f[c] *
-                                           fe_face_values.shape_value(b, q) *
-                                           fe_face_values.JxW(q);
-            }
-        }
-  }
-
-
-
-  namespace
-  {
-    /** Whether a local vector (and matrix) has only finite entries. */
-    bool
-    all_finite(const Vector<double> &v, const FullMatrix<double> *m)
-    {
-      for (const double x : v)
-        if (!std::isfinite(x))
-          return false;
-      if (m == nullptr || m->m() == 0 || m->n() == 0)
-        return true;
-      // the entries are contiguous; x * 0 is NaN exactly for NaN and inf,
-      // and a raw loop keeps this cheap in Debug builds (CPD families hold
-      // 10^5 entries and more)
-      const double     *entries = &(*m)(0, 0);
-      const std::size_t n       = std::size_t(m->m()) * m->n();
-      double            sum     = 0;
-      for (std::size_t e = 0; e < n; ++e)
-        sum += entries[e] * 0.;
-      return sum == 0.;
-    }
-
-    /** The message for a NaN or inf in an element's residual or tangent. */
-    template <int dim>
-    std::string
-    non_finite_message(const std::string &element,
-                       const Point<dim>  &where,
-                       const std::string &hint)
-    {
-      std::ostringstream s;
-      s << "NaN or inf in the residual or tangent of " << element << " at ("
-        << where << "). " << hint;
-      return s.str();
-    }
-  } // namespace
 
 
 
@@ -1493,172 +1442,29 @@ namespace pg
   Problem<dim>::Implementation::assemble(const bool with_matrix)
   {
     Timer timer;
-    if (with_matrix)
-      matrix = 0;
-    rhs   = 0;
-    force = 0;
-    failure.clear();
-    const auto &body_force = prm.body_force;
-
-    const auto copier = [&](const Copy &copy) {
-      if (copy.dofs.empty())
-        return;
-      Vector<double> minus_residual(copy.residual);
-      minus_residual *= -1.;
-      if (copy.with_matrix)
-        zero_constraints.distribute_local_to_global(copy.matrix,
-                                                    minus_residual,
-                                                    copy.dofs,
-                                                    matrix,
-                                                    rhs);
-      else
-        zero_constraints.distribute_local_to_global(minus_residual,
-                                                    copy.dofs,
-                                                    rhs);
-      force.add(copy.dofs, copy.residual);
-    };
-    const auto record_failure = [&](const std::exception &e) {
-      // a deal.II exception's own message, without the source location
-      std::string       message = e.what();
-      const auto *const exc     = dynamic_cast<const ExceptionBase *>(&e);
-      if (exc != nullptr)
-        {
-          std::ostringstream info;
-          exc->print_info(info);
-          message = Utilities::trim(info.str());
-        }
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (failure.empty())
-        failure = message;
-    };
-
-    Timer loop_timer;
-    using CellIterator = typename std::vector<
-      typename DoFHandler<dim>::active_cell_iterator>::const_iterator;
-    WorkStream::run(
-      owned_fe_cells.cbegin(),
-      owned_fe_cells.cend(),
-      [&](const CellIterator &it, Scratch<dim> &scratch, Copy &copy) {
-        copy.dofs.clear();
-        try
-          {
-            const auto &cell = *it;
-            scratch.fe_values.reinit(
-              typename Triangulation<dim>::active_cell_iterator(cell));
-            fill_q1_table(scratch.fe_values, scratch.table);
-            const unsigned int n = cell->n_vertices();
-            copy.dofs.resize(n * dim);
-            cell->get_dof_indices(copy.dofs);
-            scratch.y.resize(n);
-            for (unsigned int b = 0; b < n; ++b)
-              for (unsigned int c = 0; c < dim; ++c)
-                scratch.y[b][c] = cell->vertex(b)[c] - cell->vertex(0)[c] +
-                                  u_full[copy.dofs[b * dim + c]];
-            copy.with_matrix = with_matrix;
-            assemble_element(scratch.table,
-                             scratch.y,
-                             *material,
-                             copy.residual,
-                             with_matrix ? &copy.matrix : nullptr);
-
-            // body force and dead traction on finite element cells
-            Vector<double> f(dim);
-            if (!prm.zero_body_force)
-              for (const unsigned int q :
-                   scratch.fe_values.quadrature_point_indices())
-                {
-                  body_force.vector_value(scratch.fe_values.quadrature_point(q),
-                                          f);
-                  for (unsigned int b = 0; b < n; ++b)
-                    for (unsigned int c = 0; c < dim; ++c)
-                      copy.residual(b * dim + c) -=
-                        f(c) * scratch.fe_values.shape_value(b, q) *
-                        scratch.fe_values.JxW(q);
-                }
-            add_face_tractions(cell, scratch.fe_face_values, copy.residual);
-            if (!all_finite(copy.residual,
-                            with_matrix ? &copy.matrix : nullptr))
-              throw std::runtime_error(non_finite_message(
-                "Q1 cell " + std::to_string(cell->active_cell_index()),
-                cell->center(),
-                "Check the 'Traction', 'Body force' and 'Prescribed "
-                "displacement' functions, the material, and the cell "
-                "(degenerate or inverted)."));
-          }
-        catch (const std::exception &e)
-          {
-            copy.dofs.clear();
-            record_failure(e);
-          }
-      },
-      copier,
-      Scratch<dim>(fe_scalar),
-      Copy());
-
+    failure =
+      assembler->assemble(u_full,
+                          with_matrix ? &matrix : nullptr,
+                          rhs,
+                          force,
+                          [this](Assembler<dim> &a) { add_particle_loads(a); });
     auto &cost = summary.assembly_cost;
     if (with_matrix)
       {
         ++cost.n_assemblies;
-        cost.fe_seconds += loop_timer.wall_time();
+        cost.fe_seconds     = assembler->tangent_seconds()[0];
+        cost.family_seconds = assembler->tangent_seconds()[1];
       }
-    loop_timer.restart();
-    using FamilyIterator = std::vector<unsigned int>::const_iterator;
-    std::vector<unsigned int> family_index(owned_families.size());
-    for (unsigned int f = 0; f < family_index.size(); ++f)
-      family_index[f] = f;
-    WorkStream::run(
-      family_index.cbegin(),
-      family_index.cend(),
-      [&](const FamilyIterator &it, Scratch<dim> &scratch, Copy &copy) {
-        copy.dofs.clear();
-        try
-          {
-            const unsigned int k       = owned_families[*it];
-            const auto         members = families.members(k);
-            const unsigned int n       = members.size();
-            copy.dofs.resize(n * dim);
-            scratch.y.resize(n);
-            for (unsigned int b = 0; b < n; ++b)
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  copy.dofs[b * dim + c] = particles.dof(members[b], c);
-                  scratch.y[b][c]        = particles.position(members[b])[c] -
-                                    particles.position(k)[c] +
-                                    u_full[copy.dofs[b * dim + c]];
-                }
-            copy.with_matrix = with_matrix;
-            if (cpd)
-              cpd->assemble(k,
-                            scratch.y,
-                            copy.residual,
-                            with_matrix ? &copy.matrix : nullptr);
-            else
-              assemble_element(family_tables[*it],
-                               scratch.y,
-                               *material,
-                               copy.residual,
-                               with_matrix ? &copy.matrix : nullptr);
-            if (!all_finite(copy.residual,
-                            with_matrix ? &copy.matrix : nullptr))
-              throw std::runtime_error(non_finite_message(
-                "the family of particle " + std::to_string(k),
-                particles.position(k),
-                "Coincident particles (e.g. unmerged mesh vertices), an "
-                "empty or degenerate family, or a NaN in the prescribed "
-                "displacement make it."));
-          }
-        catch (const std::exception &e)
-          {
-            copy.dofs.clear();
-            record_failure(e);
-          }
-      },
-      copier,
-      Scratch<dim>(fe_scalar),
-      Copy());
-    if (with_matrix)
-      cost.family_seconds += loop_timer.wall_time();
+    time_assembly += timer.wall_time();
+  }
 
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::add_particle_loads(
+    Assembler<dim> &assembler) const
+  {
     // Particle loads: the body force V^k rho_0 b and, with tractions through
     // the test functions, T_b c_b with c_b the area of boundary part b in
     // the unit-stress residual d^k (section 8.2, eqs. 4.32-4.35).
@@ -1682,7 +1488,7 @@ namespace pg
           }
         else
           {
-            body_force.vector_value(particles.position(k), f);
+            loads.body_force(particles.position(k), f);
             for (unsigned int c = 0; c < dim; ++c)
               local(c) += particles.volume(k) * f(c);
           }
@@ -1703,48 +1509,59 @@ namespace pg
                 for (unsigned int c = 0; c < dim; ++c)
                   local(c) += a * t[c];
               }
-        if (!all_finite(local, nullptr) && failure.empty())
-          failure =
-            non_finite_message("the load of particle " + std::to_string(k),
-                               particles.position(k),
-                               "Check the 'Traction' and 'Body "
-                               "force' functions.");
+        if (!all_finite(local))
+          assembler.record_failure(Assembler<dim>::non_finite_message(
+            "the load of particle " + std::to_string(k),
+            particles.position(k),
+            "Check the 'Traction' and 'Body force' functions."));
         for (unsigned int c = 0; c < dim; ++c)
           dofs[c] = particles.dof(k, c);
-        zero_constraints.distribute_local_to_global(local, dofs, rhs);
-        local *= -1.;
-        force.add(dofs, local);
+        assembler.add_load(local, dofs);
       }
     // 'geometry': the FE-consistent load on the meshfree boundary faces.
-    {
-      Scratch<dim> scratch(fe_scalar);
-      Copy         copy;
-      for (const auto &cell : owned_meshfree_neumann_cells)
-        {
-          copy.dofs.resize(fe.n_dofs_per_cell());
-          cell->get_dof_indices(copy.dofs);
-          copy.residual.reinit(copy.dofs.size());
-          copy.with_matrix = false;
-          add_face_tractions(cell, scratch.fe_face_values, copy.residual);
-          if (!all_finite(copy.residual, nullptr) && failure.empty())
-            failure =
-              non_finite_message("the traction on meshfree cell " +
-                                   std::to_string(cell->active_cell_index()),
-                                 cell->center(),
-                                 "Check the 'Traction' function.");
-          copier(copy);
-        }
-    }
+    if (owned_meshfree_neumann_cells.empty())
+      return;
+    FEFaceValues<dim> fe_face_values(fe_scalar,
+                                     QGauss<dim - 1>(2),
+                                     update_values | update_quadrature_points |
+                                       update_normal_vectors |
+                                       update_JxW_values);
+    LocalSystem       local_system;
+    local_system.with_matrix = false;
+    for (const auto &cell : owned_meshfree_neumann_cells)
+      {
+        local_system.dofs.resize(fe.n_dofs_per_cell());
+        cell->get_dof_indices(local_system.dofs);
+        local_system.residual.reinit(local_system.dofs.size());
+        loads.add_face_tractions(cell, fe_face_values, local_system.residual);
+        if (!all_finite(local_system.residual))
+          assembler.record_failure(Assembler<dim>::non_finite_message(
+            "the traction on meshfree cell " +
+              std::to_string(cell->active_cell_index()),
+            cell->center(),
+            "Check the 'Traction' function."));
+        assembler.distribute(local_system);
+      }
+  }
 
-    if (with_matrix)
-      matrix.compress(VectorOperation::add);
-    rhs.compress(VectorOperation::add);
-    force.compress(VectorOperation::add);
-    if (failure.empty() && !std::isfinite(rhs.l2_norm()))
-      failure = "NaN or inf in the assembled residual (none in the "
-                "elements' own contributions: check the constraints and "
-                "'Prescribed displacement').";
-    time_assembly += timer.wall_time();
+
+
+  template <int dim>
+  NewtonSolver::Operations
+  Problem<dim>::Implementation::newton_operations()
+  {
+    NewtonSolver::Operations operations;
+    operations.assemble = [this]() -> std::string {
+      assemble(true);
+      if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) == 0)
+        return "";
+      return failure.empty() ? "the assembly failed on another rank" : failure;
+    };
+    operations.residual_norm    = [this]() { return rhs.l2_norm(); };
+    operations.solve_and_update = [this](double &energy) {
+      return apply_newton_update(energy);
+    };
+    return operations;
   }
 
 
@@ -1760,64 +1577,22 @@ namespace pg
     update_full_solution();
     last_failure.clear();
 
-    summary.newton_residuals_last_step.clear();
-    double             first = 0;
-    std::ostringstream line;
-    line << std::scientific << std::setprecision(2);
-    iterations = 0;
-    for (unsigned int it = 0; it <= prm.newton.maximum_iterations; ++it)
-      {
-        assemble(true);
-        const bool failed =
-          Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0;
-        if (failed)
-          {
-            last_failure =
-              failure.empty() ? "the assembly failed on another rank" : failure;
-            pcout << "    assembly failed"
-                  << (failure.empty() ? "" : ": " + failure.substr(0, 400))
-                  << std::endl;
-            return false;
-          }
-        const double residual = rhs.l2_norm();
-        summary.newton_residuals_last_step.push_back(residual);
-        if (it == 0)
-          first = residual;
-        if (!std::isfinite(residual))
-          {
-            // never print a NaN residual as a ratio 0
-            line << " " << residual;
-            last_failure = "the Newton residual is not finite (|R| = " +
-                           std::to_string(residual) + ")";
-            break;
-          }
-        line << " " << (first > 0 ? residual / first : 0.);
-        if (residual <= prm.newton.absolute_tolerance ||
-            residual <= prm.newton.relative_tolerance * first)
-          {
-            pcout << "    Newton " << it << ": |R|/|R_0| =" << line.str()
-                  << std::endl;
-            summary.newton_residuals.push_back(
-              summary.newton_residuals_last_step);
-            return true;
-          }
-        if (it == prm.newton.maximum_iterations)
-          break;
-
-        if (!apply_newton_update())
-          return false;
-        ++iterations;
-      }
-    pcout << "    Newton did not converge: |R|/|R_0| =" << line.str()
-          << std::endl;
-    return false;
+    const NewtonSolver::Result result =
+      NewtonSolver(prm.newton).solve(newton_operations());
+    summary.newton_residuals_last_step = result.residuals;
+    iterations                         = result.updates;
+    last_failure                       = result.failure;
+    NewtonSolver::report(result, pcout);
+    if (result.converged())
+      summary.newton_residuals.push_back(result.residuals);
+    return result.converged();
   }
 
 
 
   template <int dim>
   bool
-  Problem<dim>::Implementation::apply_newton_update()
+  Problem<dim>::Implementation::apply_newton_update(double &energy)
   {
     Timer timer;
     update = 0;
@@ -1839,6 +1614,7 @@ namespace pg
     time_solve += timer.wall_time();
     ++summary.assembly_cost.n_solves;
     zero_constraints.distribute(update);
+    energy = update * rhs;
     solution_owned += update;
     update_full_solution();
     return true;
@@ -2069,14 +1845,16 @@ namespace pg
     if (!owned_fe_cells.empty())
       {
         // every Q1 cell has the same table size
-        Scratch<dim> scratch(fe_scalar);
-        scratch.fe_values.reinit(
-          typename Triangulation<dim>::active_cell_iterator(
-            owned_fe_cells.front()));
-        fill_q1_table(scratch.fe_values, scratch.table);
-        cost.fe_entries =
-          owned_fe_cells.size() * tangent_entries(scratch.table);
-        cost.fe_flops = owned_fe_cells.size() * tangent_flops(scratch.table);
+        FEValues<dim>        fe_values(fe_scalar,
+                                QGauss<dim>(2),
+                                update_gradients | update_values |
+                                  update_quadrature_points | update_JxW_values);
+        QuadratureTable<dim> table;
+        fe_values.reinit(typename Triangulation<dim>::active_cell_iterator(
+          owned_fe_cells.front()));
+        fill_q1_table(fe_values, table);
+        cost.fe_entries = owned_fe_cells.size() * tangent_entries(table);
+        cost.fe_flops   = owned_fe_cells.size() * tangent_flops(table);
       }
     if (cpd)
       for (const unsigned int k : owned_families)
@@ -2699,65 +2477,32 @@ namespace pg
     postprocess(0, 0., 0);
     postprocess_timer.stop();
 
+    LoadStepper::Operations stepping;
+    stepping.solve = [this](const double t, unsigned int &iterations) {
+      return solve_step(t, iterations);
+    };
+    stepping.commit = [this]() { converged_solution = solution_owned; };
+    stepping.revert = [this]() {
+      solution_owned = converged_solution;
+      update_full_solution();
+    };
+    stepping.step_done = [this](const unsigned int step,
+                                const double       t,
+                                const unsigned int iterations) {
+      summary.newton_iterations += iterations;
+      summary.load_steps = step;
+      summary.converged  = true;
+      postprocess_timer.start();
+      postprocess(step, t, iterations);
+      postprocess_timer.stop();
+    };
+    stepping.give_up = [this](const unsigned int step, const double t) {
+      summary.converged = false;
+      write_files(step, t);
+    };
+    stepping.last_failure = [this]() { return last_failure; };
+    LoadStepper(prm.loading, prm.output.directory, pcout).run(stepping);
     const unsigned int n_steps = prm.loading.load_steps;
-    double             t       = 0;
-    for (unsigned int step = 1; step <= n_steps; ++step)
-      {
-        const double       target = static_cast<double>(step) / n_steps;
-        double             dt     = target - t;
-        unsigned int       cuts   = 0;
-        std::ostringstream header;
-        header << "  load step " << step << ", t = " << target;
-        pcout << header.str() << std::endl;
-        unsigned int step_iterations = 0;
-        while (t < target - 1e-14)
-          {
-            const double t_new      = std::min(target, t + dt);
-            converged_solution      = solution_owned;
-            unsigned int iterations = 0;
-            if (solve_step(t_new, iterations))
-              {
-                t = t_new;
-                step_iterations += iterations;
-                continue;
-              }
-            solution_owned = converged_solution;
-            update_full_solution();
-            if (++cuts > prm.loading.maximum_step_cuts)
-              {
-                summary.converged = false;
-                write_files(step, t);
-                AssertThrow(
-                  false,
-                  ExcMessage(
-                    "Load step " + std::to_string(step) +
-                    " did not converge after " +
-                    std::to_string(prm.loading.maximum_step_cuts) +
-                    " step cuts (last load factor reached: " +
-                    std::to_string(t) + "). " +
-                    (last_failure.empty() ?
-                       std::string() :
-                       "The last attempt ended with: " + last_failure + " ") +
-                    // smaller steps do not cure a NaN in the input
-                    (last_failure.find("NaN or inf") != std::string::npos ?
-                       std::string() :
-                       "Increase 'Load steps' or 'Maximum step "
-                       "cuts' in subsection 'Loading', or "
-                       "'Maximum iterations' in subsection "
-                       "'Newton'. ") +
-                    "The results of the converged steps are in '" +
-                    prm.output.directory + "'."));
-              }
-            dt /= 2;
-            pcout << "    cutting the step to dt = " << dt << std::endl;
-          }
-        summary.newton_iterations += step_iterations;
-        summary.load_steps = step;
-        summary.converged  = true;
-        postprocess_timer.start();
-        postprocess(step, t, step_iterations);
-        postprocess_timer.stop();
-      }
     postprocess_timer.start();
 
     // The oscillation indicator and a plain table of the particle fields
@@ -2857,89 +2602,6 @@ namespace pg
 
   template <int dim>
   void
-  Problem<dim>::Implementation::assemble_mass(const bool consistent)
-  {
-    const double rho = prm.material.density;
-    // Lumped: every rank sums over all cells (the shared triangulation
-    // knows them), so the full vector needs no communication.
-    Vector<double>     m(dof_handler.n_dofs());
-    FEValues<dim>      fe_values(fe_scalar,
-                            QGauss<dim>(2),
-                            update_values | update_JxW_values);
-    const unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    FullMatrix<double>                   local(dofs.size(), dofs.size());
-    if (consistent)
-      {
-        mass_matrix.copy_from(matrix);
-        mass_matrix = 0;
-        condensed_mass.copy_from(matrix);
-        condensed_mass = 0;
-      }
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        fe_values.reinit(
-          typename Triangulation<dim>::active_cell_iterator(cell));
-        cell->get_dof_indices(dofs);
-        local             = 0;
-        const bool lumped = !consistent || meshfree[cell->active_cell_index()];
-        for (unsigned int a = 0; a < n_vertices; ++a)
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              const double w =
-                rho * fe_values.shape_value(a, q) * fe_values.JxW(q);
-              for (unsigned int c = 0; c < dim; ++c)
-                m[dofs[a * dim + c]] += w;
-              if (lumped)
-                for (unsigned int c = 0; c < dim; ++c)
-                  local(a * dim + c, a * dim + c) += w;
-              else
-                for (unsigned int b = 0; b < n_vertices; ++b)
-                  for (unsigned int c = 0; c < dim; ++c)
-                    local(a * dim + c, b * dim + c) +=
-                      w * fe_values.shape_value(b, q);
-            }
-        if (consistent && cell->is_locally_owned())
-          {
-            mass_matrix.add(dofs, local);
-            zero_constraints.distribute_local_to_global(local,
-                                                        dofs,
-                                                        condensed_mass);
-          }
-      }
-    if (consistent)
-      {
-        mass_matrix.compress(VectorOperation::add);
-        condensed_mass.compress(VectorOperation::add);
-      }
-
-    // The diagonal of C^T M C for the homogeneous constraints.
-    Vector<double> m_condensed(m);
-    for (const auto &line : zero_constraints.get_lines())
-      {
-        for (const auto &[j, c] : line.entries)
-          m_condensed[j] += c * c * m[line.index];
-        m_condensed[line.index] = 0;
-      }
-    lumped_mass.reinit(owned_dofs, comm);
-    inverse_mass.reinit(owned_dofs, comm);
-    for (const auto i : owned_dofs)
-      {
-        AssertThrow(m[i] > 0,
-                    ExcBadParameter("Material/Density",
-                                    std::to_string(rho),
-                                    "dynamics needs a positive density."));
-        lumped_mass(i)  = m[i];
-        inverse_mass(i) = m_condensed[i] > 0 ? 1. / m_condensed[i] : 0.;
-      }
-    lumped_mass.compress(VectorOperation::insert);
-    inverse_mass.compress(VectorOperation::insert);
-  }
-
-
-
-  template <int dim>
-  void
   Problem<dim>::Implementation::compute_external_force(
     LinearAlgebra::Vector &f_ext)
   {
@@ -2977,85 +2639,6 @@ namespace pg
           z(j) += c * ghosted(line.index);
     z.compress(VectorOperation::insert);
     target.add(factor, z);
-  }
-
-
-
-  template <int dim>
-  bool
-  Problem<dim>::Implementation::newmark_step(const double           t_new,
-                                             const double           dt,
-                                             LinearAlgebra::Vector &v,
-                                             LinearAlgebra::Vector &a,
-                                             LinearAlgebra::Vector &f_ext,
-                                             unsigned int          &iterations)
-  {
-    const double beta = prm.time.beta, gamma = prm.time.gamma;
-    const double c0 = 1. / (beta * dt * dt);
-    set_load_factor(t_new);
-    compute_external_force(f_ext);
-    if (prm.boundary_conditions.prescribes_values())
-      make_constraints(constraints, false);
-    // the predictor u~ = u + dt v + dt^2 (1/2 - beta) a, i.e. a_new = 0
-    LinearAlgebra::Vector u_tilde(solution_owned);
-    u_tilde.add(dt, v, dt * dt * (0.5 - beta), a);
-    solution_owned = u_tilde;
-    constraints.distribute(solution_owned);
-    update_full_solution();
-
-    LinearAlgebra::Vector a_new(owned_dofs, comm), Ma(owned_dofs, comm);
-    summary.newton_residuals_last_step.clear();
-    double             reference = 0;
-    std::ostringstream line;
-    line << std::scientific << std::setprecision(2);
-    iterations = 0;
-    for (unsigned int it = 0; it <= prm.newton.maximum_iterations; ++it)
-      {
-        assemble(true);
-        if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0)
-          {
-            last_failure =
-              failure.empty() ? "the assembly failed on another rank" : failure;
-            pcout << "    assembly failed"
-                  << (failure.empty() ? "" : ": " + failure.substr(0, 400))
-                  << std::endl;
-            return false;
-          }
-        a_new = solution_owned;
-        a_new -= u_tilde;
-        a_new *= c0;
-        mass_matrix.vmult(Ma, a_new);
-        const double static_norm = rhs.l2_norm();
-        add_condensed(Ma, -1., rhs);
-        matrix.add(c0, condensed_mass);
-        const double residual = rhs.l2_norm();
-        summary.newton_residuals_last_step.push_back(residual);
-        if (it == 0)
-          reference = std::max({residual, static_norm, Ma.l2_norm()});
-        if (!std::isfinite(residual))
-          {
-            line << " " << residual;
-            last_failure = "the Newton residual is not finite (|R| = " +
-                           std::to_string(residual) + ")";
-            break;
-          }
-        line << " " << (reference > 0 ? residual / reference : 0.);
-        if (residual <= prm.newton.absolute_tolerance ||
-            residual <= prm.newton.relative_tolerance * reference)
-          {
-            v.add(dt * (1. - gamma), a, dt * gamma, a_new);
-            a = a_new;
-            return true;
-          }
-        if (it == prm.newton.maximum_iterations)
-          break;
-        if (!apply_newton_update())
-          return false;
-        ++iterations;
-      }
-    pcout << "    Newton did not converge: |R|/|R_0| =" << line.str()
-          << std::endl;
-    return false;
   }
 
 
@@ -3130,16 +2713,15 @@ namespace pg
   void
   Problem<dim>::Implementation::run_dynamics()
   {
-    const auto  &time      = prm.time;
-    const bool   explicit_ = (time.integrator == "leapfrog");
-    const double T         = time.end_time;
-    auto        &d         = summary.dynamics;
-    d.integrator           = time.integrator;
+    const auto &time      = prm.time;
+    const bool  explicit_ = (time.integrator == "leapfrog");
+    auto       &d         = summary.dynamics;
+    d.integrator          = time.integrator;
 
     // Initial conditions at the vertices; the Dirichlet values of t = 0
     // win, and the constrained DoFs start at rest.
     set_load_factor(0.);
-    LinearAlgebra::Vector v(owned_dofs, comm), a(owned_dofs, comm);
+    LinearAlgebra::Vector v(owned_dofs, comm);
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int vertex : cell->vertex_indices())
         for (unsigned int c = 0; c < dim; ++c)
@@ -3169,229 +2751,56 @@ namespace pg
           }
         disorder_reference = TimeIntegration::rms_about_mean(u0, V);
       }
-    // 1 at the constrained DoFs
-    LinearAlgebra::Vector constrained(owned_dofs, comm);
-    for (const auto i : owned_dofs)
-      if (zero_constraints.is_constrained(i))
-        constrained(i) = 1.;
-    constrained.compress(VectorOperation::insert);
-
-    // The stable step from the tangent of the initial state.
-    assemble(true);
-    AssertThrow(failure.empty(), ExcMessage(failure));
-    assemble_mass(!explicit_);
-    const double omega2 =
-      TimeIntegration::largest_eigenvalue(matrix, inverse_mass);
-    const double dt_stable = omega2 > 0 ? 2. / std::sqrt(omega2) : T;
-    d.stable_time_step     = dt_stable;
-    {
-      std::ostringstream line;
-      line << std::setprecision(4) << "  time integrator: " << time.integrator
-           << ", stable leapfrog step 2/omega_max = " << dt_stable
-           << " (omega_max = " << std::sqrt(omega2) << ")";
-      pcout << line.str() << std::endl;
-    }
-    const auto text = [](const double x) {
-      std::ostringstream s;
-      s << std::setprecision(4) << x;
-      return s.str();
-    };
+    assemble_masses(dof_handler,
+                    meshfree,
+                    zero_constraints,
+                    matrix,
+                    prm.material.density,
+                    !explicit_,
+                    masses);
+    std::unique_ptr<TimeIntegrator> integrator;
     if (explicit_)
-      AssertThrow(time.time_step <= dt_stable,
-                  ExcBadParameter("Time/Time step",
-                                  text(time.time_step),
-                                  "it exceeds the stable step of leapfrog, "
-                                  "2/omega_max = " +
-                                    text(dt_stable) +
-                                    " (estimated from the tangent of the "
-                                    "initial state): use a smaller step, or "
-                                    "0 for the automatic one."));
-    double dt =
-      time.time_step > 0 ? time.time_step : time.safety_factor * dt_stable;
-    const unsigned int n_steps =
-      std::max(1., std::ceil(T / dt - 1e-9 * T / dt));
-    dt          = T / n_steps;
-    d.n_steps   = n_steps;
-    d.time_step = dt;
-    {
-      std::ostringstream line;
-      line << std::setprecision(4) << "  time step " << dt << ", " << n_steps
-           << " steps to t = " << T;
-      pcout << line.str() << std::endl;
-    }
-
-    // The state at t = 0: accelerations and energies.
-    LinearAlgebra::Vector f_ext(owned_dofs, comm), f_int(owned_dofs, comm),
-      Ma(owned_dofs, comm), u_old(owned_dofs, comm), du(owned_dofs, comm),
-      r_old(owned_dofs, comm), r_new(owned_dofs, comm);
-    compute_external_force(f_ext);
-    assemble(false);
-    AssertThrow(failure.empty(), ExcMessage(failure));
-    if (explicit_)
-      {
-        a = rhs;
-        a.scale(inverse_mass);
-      }
+      integrator = std::make_unique<Leapfrog>(masses);
     else
-      {
-        a = 0;
-        solve_linear_system(prm.linear_solver,
-                            dof_handler,
-                            condensed_mass,
-                            a,
-                            rhs);
-        zero_constraints.distribute(a);
-      }
-    f_int = force;
-    f_int += f_ext;
-    // E_kin (and that of the constrained DoFs, whose change the supports
-    // pay for with lumped masses) and the reaction including inertia.
-    const auto kinetic = [&](double &constrained_part) {
-      constrained_part = 0;
-      if (!explicit_)
-        {
-          mass_matrix.vmult(Ma, v);
-          return 0.5 * (v * Ma);
-        }
-      double e = 0, e_constrained = 0;
-      for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
-        {
-          const double ei =
-            0.5 * lumped_mass.begin()[i] * v.begin()[i] * v.begin()[i];
-          e += ei;
-          e_constrained += constrained.begin()[i] * ei;
-        }
-      constrained_part = Utilities::MPI::sum(e_constrained, comm);
-      return Utilities::MPI::sum(e, comm);
+      integrator =
+        std::make_unique<Newmark>(masses, prm.time, prm.newton, pcout);
+
+    TimeStepper::Operations operations;
+    operations.started = [&](const TimeStepper::Result &r) {
+      d.stable_time_step = r.stable_time_step;
+      d.n_steps          = r.n_steps;
+      d.time_step        = r.time_step;
+      summary.load_steps = 0;
+      summary.converged  = true;
     };
-    const auto reaction = [&](LinearAlgebra::Vector &r) {
-      // (f_int - f_ext + M a) at the constrained DoFs (Newmark), f_int -
-      // f_ext there (leapfrog: the inertia enters through E_kin)
-      r = force;
-      if (!explicit_)
-        {
-          mass_matrix.vmult(Ma, a);
-          r += Ma;
-        }
-      r.scale(constrained);
+    operations.step_done = [&](const unsigned int step,
+                               const unsigned int iterations) {
+      summary.newton_iterations += iterations;
+      summary.load_steps                 = step;
+      summary.newton_residuals_last_step = integrator->last_residuals;
     };
-    double kinetic_constrained = 0;
-    energies                   = TimeIntegration::Energies();
-    energies.kinetic           = kinetic(kinetic_constrained);
-    energies.initial_kinetic   = energies.kinetic;
-    reaction(r_old);
-
-    const auto progress = [&](const unsigned int step, const double t) {
-      std::ostringstream line;
-      line << std::setprecision(4) << "  t = " << t << ", step " << step
-           << ": E_kin = " << energies.kinetic
-           << ", W_int = " << energies.internal_work
-           << ", W_ext = " << energies.external_work
-           << ", W_supports = " << energies.support_work;
-      const double scale = std::max({std::abs(energies.kinetic),
-                                     std::abs(energies.internal_work),
-                                     std::abs(energies.initial_kinetic),
-                                     std::abs(energies.external_work)});
-      line << std::scientific << std::setprecision(1) << ", balance/max(E) = "
-           << (scale > 0 ? energies.balance() / scale : 0.);
-      if (!summary.dynamics.disorder.empty())
-        line << std::defaultfloat << std::setprecision(3)
-             << ", disorder = " << summary.dynamics.disorder.back();
-      pcout << line.str() << std::endl;
+    operations.output = [&](const unsigned int step,
+                            const double       t,
+                            const unsigned int iterations) {
+      postprocess_timer.start();
+      postprocess(step, t, iterations);
+      postprocess_timer.stop();
     };
-
-    summary.load_steps = 0;
-    summary.converged  = true;
-    postprocess_timer.start();
-    postprocess(0, 0., 0);
-    postprocess_timer.stop();
-    progress(0, 0.);
-    const double interval    = time.output_interval;
-    double       next_output = interval;
-
-    double t = 0;
-    for (unsigned int step = 1; step <= n_steps; ++step)
-      {
-        const double t_new      = (step == n_steps ? T : step * dt);
-        unsigned int iterations = 0;
-        u_old                   = solution_owned;
-        const double          kinetic_constrained_old = kinetic_constrained;
-        LinearAlgebra::Vector f_ext_old(f_ext), f_int_old(f_int);
-        if (explicit_)
-          {
-            // velocity Verlet: v += dt/2 a; u += dt v; a(u); v += dt/2 a
-            v.add(0.5 * dt, a);
-            solution_owned.add(dt, v);
-            set_load_factor(t_new);
-            if (prm.boundary_conditions.prescribes_values())
-              make_constraints(constraints, false);
-            constraints.distribute(solution_owned);
-            update_full_solution();
-            compute_external_force(f_ext);
-            assemble(false);
-            AssertThrow(failure.empty(),
-                        ExcMessage("At t = " + std::to_string(t_new) + ": " +
-                                   failure));
-            a = rhs;
-            a.scale(inverse_mass);
-            v.add(0.5 * dt, a);
-            // the constrained DoFs: the difference quotient
-            du = solution_owned;
-            du -= u_old;
-            for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
-              if (constrained.begin()[i] > 0)
-                v.begin()[i] = du.begin()[i] / dt;
-          }
-        else if (!newmark_step(t_new, dt, v, a, f_ext, iterations))
-          {
-            solution_owned = u_old;
-            update_full_solution();
-            summary.converged = false;
-            write_files(step - 1, t);
-            AssertThrow(false,
-                        ExcMessage(
-                          "The Newmark step to t = " + std::to_string(t_new) +
-                          " did not converge. Reduce 'Time step' in "
-                          "subsection 'Time', or increase 'Maximum "
-                          "iterations' in subsection 'Newton'. The results "
-                          "up to t = " +
-                          std::to_string(t) + " are in '" +
-                          prm.output.directory + "'."));
-          }
-        t = t_new;
-        summary.newton_iterations += iterations;
-        summary.load_steps = step;
-
-        // energies (trapezoidal rule)
-        du = solution_owned;
-        du -= u_old;
-        f_int = force;
-        f_int += f_ext;
-        reaction(r_new);
-        energies.kinetic = kinetic(kinetic_constrained);
-        f_int_old += f_int;
-        f_ext_old += f_ext;
-        r_old += r_new;
-        energies.internal_work += 0.5 * (f_int_old * du);
-        energies.external_work += 0.5 * (f_ext_old * du);
-        energies.support_work +=
-          0.5 * (r_old * du) + kinetic_constrained - kinetic_constrained_old;
-        r_old = r_new;
-        AssertThrow(std::isfinite(energies.kinetic),
-                    ExcMessage("The motion became unbounded at t = " +
-                               std::to_string(t) +
-                               ": reduce 'Time step' in subsection 'Time'."));
-
-        if (step == n_steps || interval == 0. || t >= next_output - 1e-9 * dt)
-          {
-            while (interval > 0. && next_output <= t + 1e-9 * dt)
-              next_output += interval;
-            postprocess_timer.start();
-            postprocess(step, t, iterations);
-            postprocess_timer.stop();
-            progress(step, t);
-          }
-      }
+    operations.give_up = [&](const unsigned int last_step, const double t) {
+      summary.converged = false;
+      write_files(last_step, t);
+    };
+    const TimeStepper::Result result =
+      TimeStepper(time, prm.output.directory, pcout)
+        .run(*this,
+             *integrator,
+             masses,
+             v,
+             energies,
+             summary.dynamics.disorder,
+             operations);
+    const unsigned int n_steps = result.n_steps;
+    const double       t       = result.final_time;
 
     std::vector<Tensor<2, dim>> F(particles.n_particles());
     for (unsigned int k = 0; k < F.size(); ++k)

@@ -22,7 +22,15 @@ namespace pg
                           "5",
                           Patterns::Integer(0, 30),
                           "A load step whose Newton iteration diverges is "
-                          "halved and repeated, at most this often.");
+                          "halved and repeated, at most this often per load "
+                          "step.");
+        prm.declare_entry("Easy step iterations",
+                          "4",
+                          Patterns::Integer(0),
+                          "After a cut, a sub-step that converges in at most "
+                          "this many Newton iterations doubles the next "
+                          "sub-step again (never beyond the rest of the load "
+                          "step). 0: a cut step stays small.");
       }
       prm.leave_subsection();
     }
@@ -36,6 +44,7 @@ namespace pg
       {
         load_steps        = prm.get_integer("Load steps");
         maximum_step_cuts = prm.get_integer("Maximum step cuts");
+        easy_iterations   = prm.get_integer("Easy step iterations");
       }
       prm.leave_subsection();
     }
@@ -61,6 +70,18 @@ namespace pg
                           "1e-12",
                           Patterns::Double(0.),
                           "... or when |R| <= this (force units).");
+        prm.declare_entry(
+          "Stagnation tolerance",
+          "1e-6",
+          Patterns::Double(0., 1.),
+          "Also converged (at round-off) when the residual has stalled below "
+          "this x |R| of the first iteration: the last update reduced |R| by "
+          "less than a factor 2 and its energy |du . R| was below the square "
+          "of this x that of the first update. The assembly and the linear "
+          "solver leave a floor of eps times the element forces, which "
+          "near-incompressible materials raise far above 'Relative "
+          "tolerance' (Cook's membrane at nu = 0.4999: 1e-9 to 1e-7). 0 "
+          "switches the test off.");
       }
       prm.leave_subsection();
     }
@@ -72,9 +93,10 @@ namespace pg
     {
       prm.enter_subsection("Newton");
       {
-        maximum_iterations = prm.get_integer("Maximum iterations");
-        relative_tolerance = prm.get_double("Relative tolerance");
-        absolute_tolerance = prm.get_double("Absolute tolerance");
+        maximum_iterations   = prm.get_integer("Maximum iterations");
+        relative_tolerance   = prm.get_double("Relative tolerance");
+        absolute_tolerance   = prm.get_double("Absolute tolerance");
+        stagnation_tolerance = prm.get_double("Stagnation tolerance");
       }
       prm.leave_subsection();
     }

@@ -20,6 +20,11 @@ namespace pg
     {
       unsigned int load_steps;
       unsigned int maximum_step_cuts;
+      /**
+       * A cut step grows again (doubles, up to the load step) after a
+       * sub-step that converged in at most this many Newton iterations.
+       */
+      unsigned int easy_iterations;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -33,6 +38,8 @@ namespace pg
       unsigned int maximum_iterations;
       double       relative_tolerance;
       double       absolute_tolerance;
+      /** See NewtonSolver: the round-off stagnation test (0: off). */
+      double stagnation_tolerance;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -1,0 +1,110 @@
+#ifndef pg_assembly_assembler_h
+#define pg_assembly_assembler_h
+
+#include <pg/base/global.h>
+#include <pg/base/linear_algebra.h>
+#include <pg/elements/element_group.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <functional>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace pg
+{
+  /** Whether a local vector (and matrix) has only finite entries. */
+  bool
+  all_finite(const Vector<double> &v, const FullMatrix<double> *m = nullptr);
+
+  /**
+   * The global residual and tangent: WorkStream over the elements of every
+   * element group (in the order given), each local system distributed with
+   * the homogeneous constraints, then the load terms that are not element
+   * integrals (particle loads). Results:
+   *  - rhs = -(f_int - f_ext), condensed (zero at constrained DoFs),
+   *  - force = f_int - f_ext, unconstrained (the reactions),
+   *  - the tangent, condensed, if asked for.
+   * An element that throws, or whose residual or tangent is not finite, is
+   * left out and its message kept: assemble() returns the first one (on
+   * this rank; empty if none).
+   */
+  template <int dim>
+  class Assembler
+  {
+  public:
+    /**
+     * @p constraints are the homogeneous constraints of the Newton update.
+     */
+    Assembler(const AffineConstraints<double>        &constraints,
+              const std::vector<ElementGroup<dim> *> &groups);
+
+    /** The couplings of all groups' elements. */
+    void
+    add_sparsity(DynamicSparsityPattern &sparsity) const;
+
+    /**
+     * A load term added after the groups, e.g. the particle loads: it calls
+     * add_load() or distribute() and record_failure().
+     */
+    using LoadTerm = std::function<void(Assembler<dim> &)>;
+
+    /**
+     * Assemble at the displacement @p u (indexed by global DoF) into
+     * @p rhs, @p force and, if not null, @p matrix (all zeroed first).
+     * Returns the first failure on this rank, or an empty string.
+     */
+    std::string
+    assemble(const Vector<double>        &u,
+             LinearAlgebra::SparseMatrix *matrix,
+             LinearAlgebra::Vector       &rhs,
+             LinearAlgebra::Vector       &force,
+             const LoadTerm              &loads = LoadTerm());
+
+    /** A local system f_int - f_ext into rhs (minus, condensed) and force. */
+    void
+    distribute(const LocalSystem &local);
+
+    /** An external load @p f at @p dofs: rhs += f (condensed), force -= f. */
+    void
+    add_load(const Vector<double>                       &f,
+             const std::vector<types::global_dof_index> &dofs);
+
+    /** Keep @p message if it is the first failure of this assembly. */
+    void
+    record_failure(const std::string &message);
+
+    /** Whether a failure has been recorded in this assembly. */
+    bool
+    failed() const;
+
+    /**
+     * Wall seconds of each group's loop, summed over the assemblies with a
+     * matrix (the cost of a tangent).
+     */
+    const std::vector<double> &
+    tangent_seconds() const;
+
+    /** "NaN or inf in the residual or tangent of <element> at (<p>). <hint>" */
+    static std::string
+    non_finite_message(const std::string &element,
+                       const Point<dim>  &where,
+                       const std::string &hint);
+
+  private:
+    const AffineConstraints<double>       &constraints;
+    const std::vector<ElementGroup<dim> *> groups;
+    std::vector<double>                    seconds;
+    /** The targets of the running assembly. */
+    LinearAlgebra::SparseMatrix *matrix = nullptr;
+    LinearAlgebra::Vector       *rhs    = nullptr;
+    LinearAlgebra::Vector       *force  = nullptr;
+    std::mutex                   failure_mutex;
+    std::string                  failure;
+  };
+} // namespace pg
+
+#endif

@@ -1,0 +1,119 @@
+#ifndef pg_elements_element_group_h
+#define pg_elements_element_group_h
+
+#include <pg/base/global.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pg
+{
+  /**
+   * Per-thread work space of an element group (FEValues, local tables):
+   * created once per thread by the Assembler through clone().
+   */
+  struct GroupScratch
+  {
+    virtual ~GroupScratch() = default;
+
+    virtual std::unique_ptr<GroupScratch>
+    clone() const = 0;
+  };
+
+  /** What one element hands to the global system. */
+  struct LocalSystem
+  {
+    /** Global DoF indices, node-major (node a, component c: a * dim + c). */
+    std::vector<types::global_dof_index> dofs;
+    /** f_int - f_ext of the element (force units), in the order of dofs. */
+    Vector<double> residual;
+    /** d residual / d u (filled only if with_matrix). */
+    FullMatrix<double> matrix;
+    bool               with_matrix = true;
+  };
+
+  /**
+   * Everything that assembles is an element group (architecture.md section
+   * 7): the Q1 cells, the PG families, the CPD interactions, later the mixed
+   * cells and families. A group knows its locally owned elements, their DoF
+   * indices and couplings, their evaluation points, and the local residual
+   * and tangent at a displacement; local fields (a P0 pressure, bubbles)
+   * are condensed inside assemble() and recovered by
+   * recover_local_fields(). The Assembler runs WorkStream over every group;
+   * nothing outside a group branches on the formulation it implements.
+   */
+  template <int dim>
+  class ElementGroup
+  {
+  public:
+    virtual ~ElementGroup() = default;
+
+    /** For messages and timings, e.g. "Q1 cells". */
+    virtual std::string
+    name() const = 0;
+
+    /** The locally owned elements, numbered 0 .. n_elements() - 1. */
+    virtual unsigned int
+    n_elements() const = 0;
+
+    /** The global DoF indices of element @p e, node-major. */
+    virtual void
+    get_dof_indices(const unsigned int                    e,
+                    std::vector<types::global_dof_index> &dofs) const = 0;
+
+    /**
+     * The couplings of element @p e in the sparsity pattern; by default
+     * every pair of its DoFs.
+     */
+    virtual void
+    add_sparsity(const unsigned int               e,
+                 const AffineConstraints<double> &constraints,
+                 DynamicSparsityPattern          &sparsity) const;
+
+    /** Evaluation points of element @p e (the keys of its point history). */
+    virtual unsigned int
+    n_evaluation_points(const unsigned int e) const = 0;
+
+    virtual std::unique_ptr<GroupScratch>
+    create_scratch() const = 0;
+
+    /**
+     * The local system of element @p e at the displacement @p u (indexed by
+     * global DoF): dofs, residual and (if local.with_matrix) the tangent.
+     * Throws with a message on failure.
+     */
+    virtual void
+    assemble(const unsigned int    e,
+             const Vector<double> &u,
+             GroupScratch         &scratch,
+             LocalSystem          &local) const = 0;
+
+    /**
+     * After a Newton update @p du (indexed by global DoF): recover the
+     * condensed local fields of element @p e. Nothing by default.
+     */
+    virtual void
+    recover_local_fields(const unsigned int e, const Vector<double> &du);
+
+    /** "Q1 cell 17", "the family of particle 4", for messages. */
+    virtual std::string
+    element_name(const unsigned int e) const = 0;
+
+    /** A position of element @p e for messages (a cell centre, a master). */
+    virtual Point<dim>
+    element_position(const unsigned int e) const = 0;
+
+    /** What to check when an element's residual is not finite. */
+    virtual std::string
+    non_finite_hint() const = 0;
+  };
+} // namespace pg
+
+#endif

@@ -1,0 +1,136 @@
+#ifndef pg_elements_family_group_h
+#define pg_elements_family_group_h
+
+#include <pg/elements/cpd_interactions.h>
+#include <pg/elements/element_group.h>
+#include <pg/elements/quadrature_table.h>
+#include <pg/families/family_set.h>
+#include <pg/materials/material.h>
+#include <pg/mesh/particle_set.h>
+
+#include <vector>
+
+namespace pg
+{
+  /**
+   * What every family-based group shares: element e is the family of the
+   * locally owned master particle owned_families[e]; its nodes are the
+   * family members (the master first), its DoFs theirs, and its local
+   * positions y_b = X_b - X_k + u_b.
+   */
+  template <int dim>
+  class FamilyGroupBase : public ElementGroup<dim>
+  {
+  public:
+    FamilyGroupBase(const std::vector<unsigned int> &owned_families,
+                    const FamilySet<dim>            &families,
+                    const ParticleSet<dim>          &particles);
+
+    unsigned int
+    n_elements() const override;
+
+    void
+    get_dof_indices(const unsigned int                    e,
+                    std::vector<types::global_dof_index> &dofs) const override;
+
+    std::string
+    element_name(const unsigned int e) const override;
+
+    Point<dim>
+    element_position(const unsigned int e) const override;
+
+    std::string
+    non_finite_hint() const override;
+
+  protected:
+    /** The DoFs of family @p e and the positions y of its members at @p u. */
+    void
+    gather(const unsigned int                    e,
+           const Vector<double>                 &u,
+           std::vector<types::global_dof_index> &dofs,
+           std::vector<Tensor<1, dim>>          &y) const;
+
+    const std::vector<unsigned int> &owned_families;
+    const FamilySet<dim>            &families;
+    const ParticleSet<dim>          &particles;
+  };
+
+
+
+  /**
+   * The PG families (PPG, PBG, VC, BC ...: whatever the family tables
+   * hold): the common kernel on each family's quadrature table.
+   */
+  template <int dim>
+  class FamilyGroup : public FamilyGroupBase<dim>
+  {
+  public:
+    FamilyGroup(const std::vector<unsigned int>         &owned_families,
+                const FamilySet<dim>                    &families,
+                const ParticleSet<dim>                  &particles,
+                const std::vector<QuadratureTable<dim>> &family_tables,
+                const Materials::Material<dim>          &material);
+
+    std::string
+    name() const override;
+
+    unsigned int
+    n_evaluation_points(const unsigned int e) const override;
+
+    std::unique_ptr<GroupScratch>
+    create_scratch() const override;
+
+    void
+    assemble(const unsigned int    e,
+             const Vector<double> &u,
+             GroupScratch         &scratch,
+             LocalSystem          &local) const override;
+
+  private:
+    const std::vector<QuadratureTable<dim>> &family_tables;
+    const Materials::Material<dim>          &material;
+  };
+
+
+
+  /**
+   * The CPD interactions (continuum-kinematics-inspired peridynamics),
+   * stored by master particle: a family couples its master to its
+   * neighbours only (one horizon), so its sparsity rows are the master's.
+   */
+  template <int dim>
+  class CpdGroup : public FamilyGroupBase<dim>
+  {
+  public:
+    CpdGroup(const std::vector<unsigned int> &owned_families,
+             const FamilySet<dim>            &families,
+             const ParticleSet<dim>          &particles,
+             const CpdInteractions<dim>      &interactions);
+
+    std::string
+    name() const override;
+
+    void
+    add_sparsity(const unsigned int               e,
+                 const AffineConstraints<double> &constraints,
+                 DynamicSparsityPattern          &sparsity) const override;
+
+    /** The bond, area and volume interactions of the master. */
+    unsigned int
+    n_evaluation_points(const unsigned int e) const override;
+
+    std::unique_ptr<GroupScratch>
+    create_scratch() const override;
+
+    void
+    assemble(const unsigned int    e,
+             const Vector<double> &u,
+             GroupScratch         &scratch,
+             LocalSystem          &local) const override;
+
+  private:
+    const CpdInteractions<dim> &interactions;
+  };
+} // namespace pg
+
+#endif

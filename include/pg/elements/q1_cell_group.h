@@ -1,0 +1,69 @@
+#ifndef pg_elements_q1_cell_group_h
+#define pg_elements_q1_cell_group_h
+
+#include <pg/assembly/loads.h>
+#include <pg/elements/element_group.h>
+#include <pg/materials/material.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+
+#include <vector>
+
+namespace pg
+{
+  /**
+   * The Q1 finite element cells of this rank: 2^dim Gauss points, the
+   * common kernel (assemble_element) on a Q1 quadrature table, plus the
+   * body force and the FE-consistent traction of their Neumann faces.
+   */
+  template <int dim>
+  class Q1CellGroup : public ElementGroup<dim>
+  {
+  public:
+    using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
+
+    Q1CellGroup(const std::vector<CellIterator> &cells,
+                const Materials::Material<dim>  &material,
+                const Loads<dim>                &loads);
+
+    std::string
+    name() const override;
+
+    unsigned int
+    n_elements() const override;
+
+    void
+    get_dof_indices(const unsigned int                    e,
+                    std::vector<types::global_dof_index> &dofs) const override;
+
+    unsigned int
+    n_evaluation_points(const unsigned int e) const override;
+
+    std::unique_ptr<GroupScratch>
+    create_scratch() const override;
+
+    void
+    assemble(const unsigned int    e,
+             const Vector<double> &u,
+             GroupScratch         &scratch,
+             LocalSystem          &local) const override;
+
+    std::string
+    element_name(const unsigned int e) const override;
+
+    Point<dim>
+    element_position(const unsigned int e) const override;
+
+    std::string
+    non_finite_hint() const override;
+
+  private:
+    const std::vector<CellIterator> &cells;
+    const Materials::Material<dim>  &material;
+    const Loads<dim>                &loads;
+    const FE_Q<dim>                  fe_scalar;
+  };
+} // namespace pg
+
+#endif

@@ -1,0 +1,79 @@
+#ifndef pg_solvers_time_stepper_h
+#define pg_solvers_time_stepper_h
+
+#include <pg/base/global.h>
+#include <pg/base/parameters.h>
+#include <pg/solvers/mechanical_system.h>
+#include <pg/solvers/time_integration.h>
+#include <pg/solvers/time_integrator.h>
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <functional>
+#include <vector>
+
+namespace pg
+{
+  /**
+   * The time loop of 'Time/Integrator' leapfrog or newmark: the stable step
+   * 2 / omega_max of leapfrog from the tangent of the initial state, the
+   * step size, the initial acceleration, the steps of the integrator and
+   * the energy account (kinetic energy, the work of the internal forces,
+   * of the external loads and of the supports, each by the trapezoidal
+   * rule), with a progress line at every output time.
+   */
+  class TimeStepper
+  {
+  public:
+    /** What the loop found out, for the summary. */
+    struct Result
+    {
+      double       time_step = 0, stable_time_step = 0;
+      unsigned int n_steps = 0, newton_iterations = 0;
+      double       final_time = 0;
+    };
+
+    struct Operations
+    {
+      /** Step @p step converged after @p iterations Newton updates. */
+      std::function<void(const unsigned int step,
+                         const unsigned int iterations)>
+        step_done;
+      /** The step is chosen (before the output at t = 0). */
+      std::function<void(const Result &)> started;
+      /** Output at step @p step, time @p t (energies already updated). */
+      std::function<void(const unsigned int step,
+                         const double       t,
+                         const unsigned int iterations)>
+        output;
+      /** A Newmark step failed: write what has been computed. */
+      std::function<void(const unsigned int last_step, const double t)> give_up;
+    };
+
+    TimeStepper(const Parameters::Time   &time,
+                const std::string        &output_directory,
+                const ConditionalOStream &out);
+
+    /**
+     * Run from the system's current displacement and the velocity @p v.
+     * @p energies is updated at every step; @p disorder (the particles'
+     * disorder indicator, filled by the output) is shown in the progress
+     * line if not empty.
+     */
+    Result
+    run(MechanicalSystem          &system,
+        TimeIntegrator            &integrator,
+        const MassMatrices        &masses,
+        LinearAlgebra::Vector     &v,
+        TimeIntegration::Energies &energies,
+        const std::vector<double> &disorder,
+        const Operations          &operations) const;
+
+  private:
+    const Parameters::Time   &time;
+    const std::string         output_directory;
+    const ConditionalOStream &out;
+  };
+} // namespace pg
+
+#endif

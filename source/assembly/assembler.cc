@@ -1,0 +1,234 @@
+#include <pg/assembly/assembler.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/base/work_stream.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace pg
+{
+  bool
+  all_finite(const Vector<double> &v, const FullMatrix<double> *m)
+  {
+    for (const double x : v)
+      if (!std::isfinite(x))
+        return false;
+    if (m == nullptr || m->m() == 0 || m->n() == 0)
+      return true;
+    // the entries are contiguous; x * 0 is NaN exactly for NaN and inf,
+    // and a raw loop keeps this cheap in Debug builds (CPD families hold
+    // 10^5 entries and more)
+    const double     *entries = &(*m)(0, 0);
+    const std::size_t n       = std::size_t(m->m()) * m->n();
+    double            sum     = 0;
+    for (std::size_t e = 0; e < n; ++e)
+      sum += entries[e] * 0.;
+    return sum == 0.;
+  }
+
+
+
+  namespace
+  {
+
+    /** A group's per-thread scratch, copyable as WorkStream wants it. */
+    struct ScratchHolder
+    {
+      explicit ScratchHolder(std::unique_ptr<GroupScratch> scratch)
+        : scratch(std::move(scratch))
+      {}
+      ScratchHolder(const ScratchHolder &other)
+        : scratch(other.scratch->clone())
+      {}
+      std::unique_ptr<GroupScratch> scratch;
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  Assembler<dim>::Assembler(const AffineConstraints<double>        &constraints,
+                            const std::vector<ElementGroup<dim> *> &groups)
+    : constraints(constraints)
+    , groups(groups)
+    , seconds(groups.size(), 0.)
+  {}
+
+
+
+  template <int dim>
+  void
+  Assembler<dim>::add_sparsity(DynamicSparsityPattern &sparsity) const
+  {
+    for (const ElementGroup<dim> *group : groups)
+      for (unsigned int e = 0; e < group->n_elements(); ++e)
+        group->add_sparsity(e, constraints, sparsity);
+  }
+
+
+
+  template <int dim>
+  std::string
+  Assembler<dim>::non_finite_message(const std::string &element,
+                                     const Point<dim>  &where,
+                                     const std::string &hint)
+  {
+    std::ostringstream s;
+    s << "NaN or inf in the residual or tangent of " << element << " at ("
+      << where << "). " << hint;
+    return s.str();
+  }
+
+
+
+  template <int dim>
+  void
+  Assembler<dim>::record_failure(const std::string &message)
+  {
+    std::lock_guard<std::mutex> lock(failure_mutex);
+    if (failure.empty())
+      failure = message;
+  }
+
+
+
+  template <int dim>
+  bool
+  Assembler<dim>::failed() const
+  {
+    return !failure.empty();
+  }
+
+
+
+  template <int dim>
+  const std::vector<double> &
+  Assembler<dim>::tangent_seconds() const
+  {
+    return seconds;
+  }
+
+
+
+  template <int dim>
+  void
+  Assembler<dim>::distribute(const LocalSystem &local)
+  {
+    if (local.dofs.empty())
+      return;
+    Vector<double> minus_residual(local.residual);
+    minus_residual *= -1.;
+    if (local.with_matrix && matrix != nullptr)
+      constraints.distribute_local_to_global(local.matrix,
+                                             minus_residual,
+                                             local.dofs,
+                                             *matrix,
+                                             *rhs);
+    else
+      constraints.distribute_local_to_global(minus_residual, local.dofs, *rhs);
+    force->add(local.dofs, local.residual);
+  }
+
+
+
+  template <int dim>
+  void
+  Assembler<dim>::add_load(const Vector<double>                       &f,
+                           const std::vector<types::global_dof_index> &dofs)
+  {
+    constraints.distribute_local_to_global(f, dofs, *rhs);
+    Vector<double> minus_f(f);
+    minus_f *= -1.;
+    force->add(dofs, minus_f);
+  }
+
+
+
+  template <int dim>
+  std::string
+  Assembler<dim>::assemble(const Vector<double>        &u,
+                           LinearAlgebra::SparseMatrix *matrix_,
+                           LinearAlgebra::Vector       &rhs_,
+                           LinearAlgebra::Vector       &force_,
+                           const LoadTerm              &loads)
+  {
+    matrix = matrix_;
+    rhs    = &rhs_;
+    force  = &force_;
+    if (matrix != nullptr)
+      *matrix = 0;
+    *rhs   = 0;
+    *force = 0;
+    failure.clear();
+    const bool with_matrix = (matrix != nullptr);
+
+    for (unsigned int g = 0; g < groups.size(); ++g)
+      {
+        const ElementGroup<dim>  &group = *groups[g];
+        Timer                     timer;
+        std::vector<unsigned int> elements(group.n_elements());
+        for (unsigned int e = 0; e < elements.size(); ++e)
+          elements[e] = e;
+        WorkStream::run(
+          elements.cbegin(),
+          elements.cend(),
+          [&](const std::vector<unsigned int>::const_iterator &it,
+              ScratchHolder                                   &scratch,
+              LocalSystem                                     &local) {
+            local.dofs.clear();
+            try
+              {
+                local.with_matrix = with_matrix;
+                group.assemble(*it, u, *scratch.scratch, local);
+                if (!all_finite(local.residual,
+                                with_matrix ? &local.matrix : nullptr))
+                  throw std::runtime_error(
+                    non_finite_message(group.element_name(*it),
+                                       group.element_position(*it),
+                                       group.non_finite_hint()));
+              }
+            catch (const std::exception &e)
+              {
+                local.dofs.clear();
+                // a deal.II exception's own message, without the source
+                // location
+                std::string       message = e.what();
+                const auto *const exc = dynamic_cast<const ExceptionBase *>(&e);
+                if (exc != nullptr)
+                  {
+                    std::ostringstream info;
+                    exc->print_info(info);
+                    message = Utilities::trim(info.str());
+                  }
+                record_failure(message);
+              }
+          },
+          [this](const LocalSystem &local) { distribute(local); },
+          ScratchHolder(group.create_scratch()),
+          LocalSystem());
+        if (with_matrix)
+          seconds[g] += timer.wall_time();
+      }
+
+    if (loads)
+      loads(*this);
+
+    if (with_matrix)
+      matrix->compress(VectorOperation::add);
+    rhs->compress(VectorOperation::add);
+    force->compress(VectorOperation::add);
+    if (failure.empty() && !std::isfinite(rhs->l2_norm()))
+      failure = "NaN or inf in the assembled residual (none in the "
+                "elements' own contributions: check the constraints and "
+                "'Prescribed displacement').";
+    return failure;
+  }
+
+
+
+  template class Assembler<2>;
+  template class Assembler<3>;
+} // namespace pg

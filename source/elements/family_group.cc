@@ -1,0 +1,250 @@
+#include <pg/elements/family_group.h>
+
+namespace pg
+{
+  namespace
+  {
+    /** The members' positions y of one family (per thread). */
+    template <int dim>
+    struct FamilyScratch : public GroupScratch
+    {
+      std::unique_ptr<GroupScratch>
+      clone() const override
+      {
+        return std::make_unique<FamilyScratch>();
+      }
+
+      std::vector<Tensor<1, dim>> y;
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  FamilyGroupBase<dim>::FamilyGroupBase(
+    const std::vector<unsigned int> &owned_families,
+    const FamilySet<dim>            &families,
+    const ParticleSet<dim>          &particles)
+    : owned_families(owned_families)
+    , families(families)
+    , particles(particles)
+  {}
+
+
+
+  template <int dim>
+  unsigned int
+  FamilyGroupBase<dim>::n_elements() const
+  {
+    return owned_families.size();
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyGroupBase<dim>::get_dof_indices(
+    const unsigned int                    e,
+    std::vector<types::global_dof_index> &dofs) const
+  {
+    const auto members = families.members(owned_families[e]);
+    dofs.resize(members.size() * dim);
+    for (unsigned int b = 0; b < members.size(); ++b)
+      for (unsigned int c = 0; c < dim; ++c)
+        dofs[b * dim + c] = particles.dof(members[b], c);
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyGroupBase<dim>::gather(const unsigned int                    e,
+                               const Vector<double>                 &u,
+                               std::vector<types::global_dof_index> &dofs,
+                               std::vector<Tensor<1, dim>>          &y) const
+  {
+    const unsigned int k       = owned_families[e];
+    const auto         members = families.members(k);
+    const unsigned int n       = members.size();
+    dofs.resize(n * dim);
+    y.resize(n);
+    for (unsigned int b = 0; b < n; ++b)
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          dofs[b * dim + c] = particles.dof(members[b], c);
+          y[b][c]           = particles.position(members[b])[c] -
+                    particles.position(k)[c] + u[dofs[b * dim + c]];
+        }
+  }
+
+
+
+  template <int dim>
+  std::string
+  FamilyGroupBase<dim>::element_name(const unsigned int e) const
+  {
+    return "the family of particle " + std::to_string(owned_families[e]);
+  }
+
+
+
+  template <int dim>
+  Point<dim>
+  FamilyGroupBase<dim>::element_position(const unsigned int e) const
+  {
+    return particles.position(owned_families[e]);
+  }
+
+
+
+  template <int dim>
+  std::string
+  FamilyGroupBase<dim>::non_finite_hint() const
+  {
+    return "Coincident particles (e.g. unmerged mesh vertices), an empty or "
+           "degenerate family, or a NaN in the prescribed displacement make "
+           "it.";
+  }
+
+
+
+  template <int dim>
+  FamilyGroup<dim>::FamilyGroup(
+    const std::vector<unsigned int>         &owned_families,
+    const FamilySet<dim>                    &families,
+    const ParticleSet<dim>                  &particles,
+    const std::vector<QuadratureTable<dim>> &family_tables,
+    const Materials::Material<dim>          &material)
+    : FamilyGroupBase<dim>(owned_families, families, particles)
+    , family_tables(family_tables)
+    , material(material)
+  {}
+
+
+
+  template <int dim>
+  std::string
+  FamilyGroup<dim>::name() const
+  {
+    return "PG families";
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  FamilyGroup<dim>::n_evaluation_points(const unsigned int e) const
+  {
+    return family_tables[e].n_points();
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<GroupScratch>
+  FamilyGroup<dim>::create_scratch() const
+  {
+    return std::make_unique<FamilyScratch<dim>>();
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyGroup<dim>::assemble(const unsigned int    e,
+                             const Vector<double> &u,
+                             GroupScratch         &scratch_base,
+                             LocalSystem          &local) const
+  {
+    auto &scratch = static_cast<FamilyScratch<dim> &>(scratch_base);
+    this->gather(e, u, local.dofs, scratch.y);
+    assemble_element(family_tables[e],
+                     scratch.y,
+                     material,
+                     local.residual,
+                     local.with_matrix ? &local.matrix : nullptr);
+  }
+
+
+
+  template <int dim>
+  CpdGroup<dim>::CpdGroup(const std::vector<unsigned int> &owned_families,
+                          const FamilySet<dim>            &families,
+                          const ParticleSet<dim>          &particles,
+                          const CpdInteractions<dim>      &interactions)
+    : FamilyGroupBase<dim>(owned_families, families, particles)
+    , interactions(interactions)
+  {}
+
+
+
+  template <int dim>
+  std::string
+  CpdGroup<dim>::name() const
+  {
+    return "CPD interactions";
+  }
+
+
+
+  template <int dim>
+  void
+  CpdGroup<dim>::add_sparsity(const unsigned int               e,
+                              const AffineConstraints<double> &constraints,
+                              DynamicSparsityPattern          &sparsity) const
+  {
+    // one horizon: particle k couples to its neighbours only (the zero
+    // blocks of the family's local matrix are not added)
+    std::vector<types::global_dof_index> dofs;
+    this->get_dof_indices(e, dofs);
+    const std::vector<types::global_dof_index> row(dofs.begin(),
+                                                   dofs.begin() + dim);
+    constraints.add_entries_local_to_global(row, dofs, sparsity, true);
+    constraints.add_entries_local_to_global(dofs, row, sparsity, true);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  CpdGroup<dim>::n_evaluation_points(const unsigned int e) const
+  {
+    const auto n = interactions.n_interactions(this->owned_families[e]);
+    return n[0] + n[1] + n[2];
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<GroupScratch>
+  CpdGroup<dim>::create_scratch() const
+  {
+    return std::make_unique<FamilyScratch<dim>>();
+  }
+
+
+
+  template <int dim>
+  void
+  CpdGroup<dim>::assemble(const unsigned int    e,
+                          const Vector<double> &u,
+                          GroupScratch         &scratch_base,
+                          LocalSystem          &local) const
+  {
+    auto &scratch = static_cast<FamilyScratch<dim> &>(scratch_base);
+    this->gather(e, u, local.dofs, scratch.y);
+    interactions.assemble(this->owned_families[e],
+                          scratch.y,
+                          local.residual,
+                          local.with_matrix ? &local.matrix : nullptr);
+  }
+
+
+
+  template class FamilyGroupBase<2>;
+  template class FamilyGroupBase<3>;
+  template class FamilyGroup<2>;
+  template class FamilyGroup<3>;
+  template class CpdGroup<2>;
+  template class CpdGroup<3>;
+} // namespace pg

@@ -1,0 +1,162 @@
+#include <pg/elements/q1_cell.h>
+#include <pg/elements/q1_cell_group.h>
+#include <pg/elements/quadrature_table.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+namespace pg
+{
+  namespace
+  {
+    template <int dim>
+    struct Q1Scratch : public GroupScratch
+    {
+      explicit Q1Scratch(const FiniteElement<dim> &fe_scalar)
+        : fe_values(fe_scalar,
+                    QGauss<dim>(2),
+                    update_gradients | update_values |
+                      update_quadrature_points | update_JxW_values)
+        , fe_face_values(fe_scalar,
+                         QGauss<dim - 1>(2),
+                         update_values | update_quadrature_points |
+                           update_normal_vectors | update_JxW_values)
+      {}
+
+      std::unique_ptr<GroupScratch>
+      clone() const override
+      {
+        return std::make_unique<Q1Scratch>(fe_values.get_fe());
+      }
+
+      FEValues<dim>               fe_values;
+      FEFaceValues<dim>           fe_face_values;
+      QuadratureTable<dim>        table;
+      std::vector<Tensor<1, dim>> y;
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  Q1CellGroup<dim>::Q1CellGroup(const std::vector<CellIterator> &cells,
+                                const Materials::Material<dim>  &material,
+                                const Loads<dim>                &loads)
+    : cells(cells)
+    , material(material)
+    , loads(loads)
+    , fe_scalar(1)
+  {}
+
+
+
+  template <int dim>
+  std::string
+  Q1CellGroup<dim>::name() const
+  {
+    return "Q1 cells";
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Q1CellGroup<dim>::n_elements() const
+  {
+    return cells.size();
+  }
+
+
+
+  template <int dim>
+  void
+  Q1CellGroup<dim>::get_dof_indices(
+    const unsigned int                    e,
+    std::vector<types::global_dof_index> &dofs) const
+  {
+    dofs.resize(cells[e]->get_fe().n_dofs_per_cell());
+    cells[e]->get_dof_indices(dofs);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Q1CellGroup<dim>::n_evaluation_points(const unsigned int) const
+  {
+    return 1u << dim;
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<GroupScratch>
+  Q1CellGroup<dim>::create_scratch() const
+  {
+    return std::make_unique<Q1Scratch<dim>>(fe_scalar);
+  }
+
+
+
+  template <int dim>
+  void
+  Q1CellGroup<dim>::assemble(const unsigned int    e,
+                             const Vector<double> &u,
+                             GroupScratch         &scratch_base,
+                             LocalSystem          &local) const
+  {
+    auto       &scratch = static_cast<Q1Scratch<dim> &>(scratch_base);
+    const auto &cell    = cells[e];
+    scratch.fe_values.reinit(
+      typename Triangulation<dim>::active_cell_iterator(cell));
+    fill_q1_table(scratch.fe_values, scratch.table);
+    const unsigned int n = cell->n_vertices();
+    local.dofs.resize(n * dim);
+    cell->get_dof_indices(local.dofs);
+    scratch.y.resize(n);
+    for (unsigned int b = 0; b < n; ++b)
+      for (unsigned int c = 0; c < dim; ++c)
+        scratch.y[b][c] =
+          cell->vertex(b)[c] - cell->vertex(0)[c] + u[local.dofs[b * dim + c]];
+    assemble_element(scratch.table,
+                     scratch.y,
+                     material,
+                     local.residual,
+                     local.with_matrix ? &local.matrix : nullptr);
+    loads.add_body_force(scratch.fe_values, local.residual);
+    loads.add_face_tractions(cell, scratch.fe_face_values, local.residual);
+  }
+
+
+
+  template <int dim>
+  std::string
+  Q1CellGroup<dim>::element_name(const unsigned int e) const
+  {
+    return "Q1 cell " + std::to_string(cells[e]->active_cell_index());
+  }
+
+
+
+  template <int dim>
+  Point<dim>
+  Q1CellGroup<dim>::element_position(const unsigned int e) const
+  {
+    return cells[e]->center();
+  }
+
+
+
+  template <int dim>
+  std::string
+  Q1CellGroup<dim>::non_finite_hint() const
+  {
+    return "Check the 'Traction', 'Body force' and 'Prescribed displacement' "
+           "functions, the material, and the cell (degenerate or inverted).";
+  }
+
+
+
+  template class Q1CellGroup<2>;
+  template class Q1CellGroup<3>;
+} // namespace pg

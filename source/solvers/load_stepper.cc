@@ -1,0 +1,84 @@
+#include <pg/base/exceptions.h>
+#include <pg/solvers/load_stepper.h>
+
+#include <algorithm>
+#include <sstream>
+
+namespace pg
+{
+  LoadStepper::LoadStepper(const Parameters::Loading &parameters,
+                           const std::string         &output_directory,
+                           const ConditionalOStream  &out)
+    : parameters(parameters)
+    , output_directory(output_directory)
+    , out(out)
+  {}
+
+
+
+  void
+  LoadStepper::run(const Operations &operations) const
+  {
+    const unsigned int n_steps = parameters.load_steps;
+    double             t       = 0;
+    operations.commit();
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double       target = static_cast<double>(step) / n_steps;
+        double             dt     = target - t;
+        const double       full   = dt;
+        unsigned int       cuts   = 0;
+        std::ostringstream header;
+        header << "  load step " << step << ", t = " << target;
+        out << header.str() << std::endl;
+        unsigned int step_iterations = 0;
+        while (t < target - 1e-14)
+          {
+            const double t_new      = std::min(target, t + dt);
+            unsigned int iterations = 0;
+            if (operations.solve(t_new, iterations))
+              {
+                operations.commit();
+                t = t_new;
+                step_iterations += iterations;
+                if (cuts > 0 && iterations <= parameters.easy_iterations &&
+                    dt < full && t < target - 1e-14)
+                  {
+                    dt = std::min(2 * dt, full);
+                    out << "    growing the step to dt = " << dt << std::endl;
+                  }
+                continue;
+              }
+            operations.revert();
+            if (++cuts > parameters.maximum_step_cuts)
+              {
+                operations.give_up(step, t);
+                const std::string last_failure = operations.last_failure();
+                AssertThrow(
+                  false,
+                  ExcMessage(
+                    "Load step " + std::to_string(step) +
+                    " did not converge after " +
+                    std::to_string(parameters.maximum_step_cuts) +
+                    " step cuts (last load factor reached: " +
+                    std::to_string(t) + "). " +
+                    (last_failure.empty() ?
+                       std::string() :
+                       "The last attempt ended with: " + last_failure + " ") +
+                    // smaller steps do not cure a NaN in the input
+                    (last_failure.find("NaN or inf") != std::string::npos ?
+                       std::string() :
+                       "Increase 'Load steps' or 'Maximum step "
+                       "cuts' in subsection 'Loading', or "
+                       "'Maximum iterations' in subsection "
+                       "'Newton'. ") +
+                    "The results of the converged steps are in '" +
+                    output_directory + "'."));
+              }
+            dt /= 2;
+            out << "    cutting the step to dt = " << dt << std::endl;
+          }
+        operations.step_done(step, t, step_iterations);
+      }
+  }
+} // namespace pg

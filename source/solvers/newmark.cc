@@ -1,0 +1,96 @@
+#include <pg/solvers/time_integrator.h>
+
+#include <algorithm>
+
+namespace pg
+{
+  Newmark::Newmark(const MassMatrices       &masses,
+                   const Parameters::Time   &time,
+                   const Parameters::Newton &newton,
+                   const ConditionalOStream &out)
+    : masses(masses)
+    , beta(time.beta)
+    , gamma(time.gamma)
+    , newton(newton)
+    , out(out)
+  {}
+
+
+
+  bool
+  Newmark::is_explicit() const
+  {
+    return false;
+  }
+
+
+
+  void
+  Newmark::initial_acceleration(MechanicalSystem      &system,
+                                LinearAlgebra::Vector &a) const
+  {
+    a = 0;
+    system.solve(masses.condensed, a, system.residual());
+    system.homogeneous_constraints().distribute(a);
+  }
+
+
+
+  bool
+  Newmark::step(MechanicalSystem      &system,
+                const double           t_new,
+                const double           dt,
+                LinearAlgebra::Vector &v,
+                LinearAlgebra::Vector &a,
+                LinearAlgebra::Vector &f_ext,
+                unsigned int          &iterations)
+  {
+    const double c0 = 1. / (beta * dt * dt);
+    system.set_time(t_new);
+    system.external_force(f_ext);
+    // the predictor u~ = u + dt v + dt^2 (1/2 - beta) a, i.e. a_new = 0
+    LinearAlgebra::Vector &u = system.displacement();
+    LinearAlgebra::Vector  u_tilde(u);
+    u_tilde.add(dt, v, dt * dt * (0.5 - beta), a);
+    u = u_tilde;
+    system.apply_dirichlet_values();
+    system.displacement_changed();
+
+    // Newton on the effective residual: the static one plus the inertia
+    // M a_new, a_new = c0 (u - u~); the tangent gains c0 M.
+    const MPI_Comm        comm = system.communicator();
+    LinearAlgebra::Vector a_new(system.locally_owned_dofs(), comm),
+      Ma(system.locally_owned_dofs(), comm);
+    double                   static_norm = 0;
+    NewtonSolver::Operations operations  = system.newton_operations();
+    operations.assemble                  = [&]() -> std::string {
+      const std::string failure = system.assemble_residual(true);
+      if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0)
+        return failure.empty() ? "the assembly failed on another rank" :
+                                                  failure;
+      a_new = u;
+      a_new -= u_tilde;
+      a_new *= c0;
+      masses.consistent.vmult(Ma, a_new);
+      static_norm = system.residual().l2_norm();
+      system.add_condensed(Ma, -1., system.residual());
+      system.tangent().add(c0, masses.condensed);
+      return "";
+    };
+    operations.reference = [&](const double first) {
+      return std::max({first, static_norm, Ma.l2_norm()});
+    };
+    const NewtonSolver::Result result = NewtonSolver(newton).solve(operations);
+    last_residuals                    = result.residuals;
+    last_failure                      = result.failure;
+    iterations                        = result.updates;
+    if (!result.converged())
+      {
+        NewtonSolver::report(result, out);
+        return false;
+      }
+    v.add(dt * (1. - gamma), a, dt * gamma, a_new);
+    a = a_new;
+    return true;
+  }
+} // namespace pg

@@ -1,0 +1,116 @@
+#include <pg/solvers/newton_solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace pg
+{
+  NewtonSolver::NewtonSolver(const Parameters::Newton &parameters)
+    : parameters(parameters)
+  {}
+
+
+
+  NewtonSolver::Result
+  NewtonSolver::solve(const Operations &operations) const
+  {
+    Result             result;
+    std::ostringstream line;
+    line << std::scientific << std::setprecision(2);
+    double reference = 0, first_energy = 0, last_energy = 0;
+    for (unsigned int it = 0; it <= parameters.maximum_iterations; ++it)
+      {
+        result.failure = operations.assemble();
+        if (!result.failure.empty())
+          {
+            result.outcome = Outcome::assembly_failed;
+            result.history = line.str();
+            return result;
+          }
+        const double residual = operations.residual_norm();
+        result.residuals.push_back(residual);
+        if (it == 0)
+          reference =
+            operations.reference ? operations.reference(residual) : residual;
+        if (!std::isfinite(residual))
+          {
+            // never print a NaN residual as a ratio 0
+            line << " " << residual;
+            result.outcome = Outcome::not_finite;
+            result.failure = "the Newton residual is not finite (|R| = " +
+                             std::to_string(residual) + ")";
+            result.history = line.str();
+            return result;
+          }
+        line << " " << (reference > 0 ? residual / reference : 0.);
+        if (residual <= parameters.absolute_tolerance ||
+            residual <= parameters.relative_tolerance * reference)
+          {
+            result.outcome = Outcome::converged;
+            result.history = line.str();
+            return result;
+          }
+        const double stagnation = parameters.stagnation_tolerance;
+        if (it >= 2 && residual <= stagnation * reference &&
+            residual > 0.5 * result.residuals[it - 1] &&
+            std::abs(last_energy) <=
+              stagnation * stagnation * std::abs(first_energy))
+          {
+            result.outcome = Outcome::converged_at_round_off;
+            result.history = line.str();
+            return result;
+          }
+        if (it == parameters.maximum_iterations)
+          break;
+
+        double energy = 0;
+        if (!operations.solve_and_update(energy))
+          {
+            result.outcome = Outcome::linear_solver_failed;
+            result.failure = "the linear solver did not converge";
+            result.history = line.str();
+            return result;
+          }
+        if (it == 0)
+          first_energy = energy;
+        last_energy = energy;
+        ++result.updates;
+        if (operations.after_update)
+          operations.after_update();
+      }
+    result.outcome = Outcome::too_many_iterations;
+    result.history = line.str();
+    return result;
+  }
+
+
+
+  void
+  NewtonSolver::report(const Result &result, const ConditionalOStream &out)
+  {
+    switch (result.outcome)
+      {
+        case Outcome::converged:
+          out << "    Newton " << result.updates
+              << ": |R|/|R_0| =" << result.history << std::endl;
+          break;
+        case Outcome::converged_at_round_off:
+          out << "    Newton " << result.updates
+              << ": |R|/|R_0| =" << result.history
+              << " (stagnated at round-off)" << std::endl;
+          break;
+        case Outcome::assembly_failed:
+          out << "    assembly failed: " << result.failure.substr(0, 400)
+              << std::endl;
+          break;
+        case Outcome::linear_solver_failed:
+          break;
+        case Outcome::not_finite:
+        case Outcome::too_many_iterations:
+          out << "    Newton did not converge: |R|/|R_0| =" << result.history
+              << std::endl;
+          break;
+      }
+  }
+} // namespace pg
