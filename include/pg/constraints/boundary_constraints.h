@@ -1,0 +1,58 @@
+#ifndef pg_constraints_boundary_constraints_h
+#define pg_constraints_boundary_constraints_h
+
+#include <pg/base/global.h>
+#include <pg/constraints/boundary_condition_parameters.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+
+namespace pg
+{
+  /**
+   * The constraints of subsection 'Boundary conditions' on the vertex DoFs:
+   * 'Dirichlet' faces, 'Fixed points', 'Dirichlet boxes' (in this order: the
+   * first condition on a DoF wins) with the values of 'Prescribed
+   * displacement' at its current time, then 'Symmetry' (n . u = 0 on planar
+   * boundaries, where no Dirichlet condition holds the normal component).
+   * Built from all cells on every rank (parallel::shared::Triangulation
+   * knows them all), so every rank has the constraints of every DoF its
+   * families touch. Later: the contact active set.
+   */
+  template <int dim>
+  class BoundaryConstraints
+  {
+  public:
+    /**
+     * @p mesh_diameter is the scale of the geometric tolerances (fixed
+     * points: 1e-8 of it, boxes: 1e-10).
+     */
+    BoundaryConstraints(
+      const DoFHandler<dim>                &dof_handler,
+      const Parameters::BoundaryConditions &boundary_conditions,
+      const Functions::ParsedFunction<dim> &prescribed_displacement,
+      const double                          mesh_diameter);
+
+    /**
+     * Clear @p c, make it over @p relevant_dofs and close it; with
+     * @p homogeneous the prescribed values are zero (Newton updates).
+     * Throws ExcBadParameter naming the entry for a fixed point off the mesh,
+     * an empty box, a non-planar or missing symmetry boundary, and a NaN or
+     * inf prescribed value.
+     */
+    void
+    make(const IndexSet            &relevant_dofs,
+         const bool                 homogeneous,
+         AffineConstraints<double> &c) const;
+
+  private:
+    const DoFHandler<dim>                &dof_handler;
+    const Parameters::BoundaryConditions &boundary_conditions;
+    const Functions::ParsedFunction<dim> &prescribed_displacement;
+    const double                          mesh_diameter;
+  };
+} // namespace pg
+
+#endif
