@@ -2,6 +2,7 @@
 #define pg_base_parameters_h
 
 #include <pg/base/global.h>
+#include <pg/materials/material_parameters.h>
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
@@ -86,30 +87,6 @@ namespace pg
     {
       double C1, C2, C3;
       bool   partial_volumes;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /** Subsection "Material". */
-    struct Material
-    {
-      /** linear elastic | saint venant kirchhoff | neo-Hooke */
-      std::string model;
-      double      youngs_modulus;
-      double      poissons_ratio;
-      double      density;
-      /** strain | stress (2-D only) */
-      std::string plane;
-
-      /** Lame's first parameter of the 3-D material. */
-      double
-      lambda() const;
-      /** Shear modulus. */
-      double
-      mu() const;
 
       static void
       declare_parameters(ParameterHandler &prm);
