@@ -2,6 +2,8 @@
 
 #include <Eigen/Dense>
 
+#include <string>
+
 namespace pg
 {
   template <int dim>
@@ -140,7 +142,9 @@ namespace pg
                    const std::vector<Tensor<1, dim>> &y,
                    const Materials::Material<dim>    &material,
                    Vector<double>                    &residual,
-                   FullMatrix<double>                *tangent)
+                   FullMatrix<double>                *tangent,
+                   const ArrayView<const double>     &committed_state,
+                   const ArrayView<double>           &trial_state)
   {
     constexpr unsigned int d3     = dim * dim * dim;
     constexpr unsigned int d4     = dim * d3;
@@ -160,6 +164,44 @@ namespace pg
     // point) contract point by point.
     const bool dense_tangent = (K != nullptr && table.test_is_trial);
 
+    // A material with state evaluates point q from its committed slice and
+    // writes its trial slice; a stateless one takes the calls of before.
+    const unsigned int n_state = material.n_state_variables();
+    if (n_state > 0)
+      AssertThrow(committed_state.size() == table.n_points() * n_state &&
+                    trial_state.size() == table.n_points() * n_state,
+                  ExcMessage(
+                    "The material has " + std::to_string(n_state) +
+                    " state variables per point, so assemble_element() "
+                    "needs state slices of " +
+                    std::to_string(table.n_points() * n_state) +
+                    " values (committed: " +
+                    std::to_string(committed_state.size()) +
+                    ", trial: " + std::to_string(trial_state.size()) +
+                    "). Pass the element's slices of the "
+                    "QuadraturePointHistory."));
+    const auto evaluate = [&](const unsigned int    q,
+                              const Tensor<2, dim> &F,
+                              Tensor<2, dim>       &P,
+                              Tensor<4, dim>       *A) {
+      if (n_state == 0)
+        {
+          if (A != nullptr)
+            material.evaluate(F, P, *A);
+          else
+            P = material.first_piola_stress(F);
+        }
+      else
+        material.evaluate_with_state(
+          F,
+          make_array_view(committed_state.begin() + q * n_state,
+                          committed_state.begin() + (q + 1) * n_state),
+          make_array_view(trial_state.begin() + q * n_state,
+                          trial_state.begin() + (q + 1) * n_state),
+          P,
+          A);
+    };
+
     Tensor<2, dim> P;
     Tensor<4, dim> A;
     // ab[b][i][j][k] = w_q A_ijkl B^{qb}_l, reused for every test node
@@ -175,7 +217,7 @@ namespace pg
         const Tensor<2, dim>  F = deformation_gradient(table, q, y);
         if (dense_tangent)
           {
-            material.evaluate(F, P, A);
+            evaluate(q, F, P, &A);
             double *C = &weighted_tangents[q * d4];
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
@@ -185,7 +227,7 @@ namespace pg
           }
         else if (K != nullptr)
           {
-            material.evaluate(F, P, A);
+            evaluate(q, F, P, &A);
             double a_raw[dim][dim][dim][dim];
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
@@ -210,7 +252,7 @@ namespace pg
               }
           }
         else
-          P = material.first_piola_stress(F);
+          evaluate(q, F, P, nullptr);
 
         // The (sparse) test vectors of this point.
         const unsigned int t_begin =
@@ -303,13 +345,17 @@ namespace pg
                       const std::vector<Tensor<1, 2>> &,
                       const Materials::Material<2> &,
                       Vector<double> &,
-                      FullMatrix<double> *);
+                      FullMatrix<double> *,
+                      const ArrayView<const double> &,
+                      const ArrayView<double> &);
   template void
   assemble_element<3>(const QuadratureTable<3> &,
                       const std::vector<Tensor<1, 3>> &,
                       const Materials::Material<3> &,
                       Vector<double> &,
-                      FullMatrix<double> *);
+                      FullMatrix<double> *,
+                      const ArrayView<const double> &,
+                      const ArrayView<double> &);
   template Tensor<2, 2>
   deformation_gradient<2>(const QuadratureTable<2> &,
                           const unsigned int,

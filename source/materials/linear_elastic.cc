@@ -1,4 +1,5 @@
 #include <pg/materials/linear_elastic.h>
+#include <pg/materials/material_registry.h>
 
 namespace pg
 {
@@ -98,5 +99,12 @@ namespace pg
 
     template class LinearElastic<2>;
     template class LinearElastic<3>;
+
+    // Listed in this order in 'Model': linear elastic (10), saint venant
+    // kirchhoff (20), neo-Hooke (30).
+    PG_REGISTER_MATERIAL(LinearElastic,
+                         "linear elastic",
+                         "small strain, P = sigma(eps)",
+                         10)
   } // namespace Materials
 } // namespace pg

@@ -1,8 +1,6 @@
 #include <pg/base/exceptions.h>
-#include <pg/materials/linear_elastic.h>
 #include <pg/materials/material.h>
-#include <pg/materials/neo_hooke.h>
-#include <pg/materials/saint_venant_kirchhoff.h>
+#include <pg/materials/material_registry.h>
 
 #include <cmath>
 
@@ -10,6 +8,15 @@ namespace pg
 {
   namespace Materials
   {
+    PluginRegistry<MaterialPlugin> &
+    material_registry()
+    {
+      static PluginRegistry<MaterialPlugin> registry;
+      return registry;
+    }
+
+
+
     template <int dim>
     std::unique_ptr<Material<dim>>
     create_material(const Parameters::Material &parameters)
@@ -23,28 +30,11 @@ namespace pg
                                   parameters.plane,
                                   "plane stress exists in 2-D only."));
 
-      if (parameters.model == "linear elastic")
-        return std::make_unique<LinearElastic<dim>>(parameters);
-      else if (parameters.model == "saint venant kirchhoff")
-        return std::make_unique<SaintVenantKirchhoff<dim>>(parameters);
-      else if (parameters.model == "neo-Hooke")
-        {
-          AssertThrow(parameters.plane == "strain",
-                      ExcBadParameter("Material/Plane",
-                                      parameters.plane,
-                                      "plane stress is not yet available "
-                                      "for 'Model = neo-Hooke'; use 'Plane "
-                                      "= strain'."));
-          return std::make_unique<NeoHooke<dim>>(parameters);
-        }
-
-      AssertThrow(false,
-                  ExcBadParameter("Material/Model",
-                                  parameters.model,
-                                  "it must be one of 'linear elastic', "
-                                  "'saint venant kirchhoff' or "
-                                  "'neo-Hooke'."));
-      return nullptr;
+      // The model's own checks (e.g. no plane stress for neo-Hooke) are in
+      // its constructor.
+      return material_registry()
+        .get(parameters.model, "Material/Model")
+        .template create<dim>(parameters);
     }
 
 

@@ -1,4 +1,5 @@
 #include <pg/base/exceptions.h>
+#include <pg/materials/material_registry.h>
 #include <pg/materials/neo_hooke.h>
 
 #include <deal.II/base/utilities.h>
@@ -142,5 +143,9 @@ namespace pg
 
     template class NeoHooke<2>;
     template class NeoHooke<3>;
+
+    // Listed in this order in 'Model': linear elastic (10), saint venant
+    // kirchhoff (20), neo-Hooke (30).
+    PG_REGISTER_MATERIAL(NeoHooke, "neo-Hooke", "compressible, eq. 2.42", 30)
   } // namespace Materials
 } // namespace pg

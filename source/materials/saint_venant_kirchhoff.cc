@@ -1,3 +1,4 @@
+#include <pg/materials/material_registry.h>
 #include <pg/materials/saint_venant_kirchhoff.h>
 
 namespace pg
@@ -159,5 +160,12 @@ namespace pg
 
     template class SaintVenantKirchhoff<2>;
     template class SaintVenantKirchhoff<3>;
+
+    // Listed in this order in 'Model': linear elastic (10), saint venant
+    // kirchhoff (20), neo-Hooke (30).
+    PG_REGISTER_MATERIAL(SaintVenantKirchhoff,
+                         "saint venant kirchhoff",
+                         "S = lambda tr(E) 1 + 2 mu E, eq. 2.45",
+                         20)
   } // namespace Materials
 } // namespace pg

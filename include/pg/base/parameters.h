@@ -6,6 +6,7 @@
 #include <pg/constraints/boundary_condition_parameters.h>
 #include <pg/elements/cpd_parameters.h>
 #include <pg/elements/discretization_parameters.h>
+#include <pg/materials/material_parameters.h>
 #include <pg/mesh/geometry_parameters.h>
 #include <pg/postprocess/output_parameters.h>
 #include <pg/solvers/solver_parameters.h>
@@ -33,10 +34,7 @@ namespace pg
    */
   namespace Parameters
   {
-    /** Subsection "Material". */
-    struct Material
-    {
-      /** linear elastic | saint venant kirchhoff | neo-Hooke */
+    /** linear elastic | saint venant kirchhoff | neo-Hooke */
       std::string model;
       double      youngs_modulus;
       double      poissons_ratio;

@@ -4,6 +4,7 @@
 #include <pg/base/global.h>
 #include <pg/materials/material.h>
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
@@ -66,6 +67,14 @@ namespace pg
    * Local DoFs are node-major: index a*dim + A. If @p tangent is nullptr
    * only the residual is computed. @p residual and @p tangent are
    * overwritten.
+   *
+   * A material with state (n_state_variables() = m > 0) needs the element's
+   * slices of a QuadraturePointHistory: @p committed_state and
+   * @p trial_state with n_points() * m values, point q's at q * m. Point q
+   * is evaluated by Material::evaluate_with_state() from its committed
+   * values, which writes its trial values (also when @p tangent is
+   * nullptr). A stateless material ignores them (default: empty), and the
+   * kernel calls evaluate(F, P, A) or first_piola_stress(F) as before.
    */
   template <int dim>
   void
@@ -73,7 +82,9 @@ namespace pg
                    const std::vector<Tensor<1, dim>> &y,
                    const Materials::Material<dim>    &material,
                    Vector<double>                    &residual,
-                   FullMatrix<double>                *tangent);
+                   FullMatrix<double>                *tangent,
+                   const ArrayView<const double>     &committed_state = {},
+                   const ArrayView<double>           &trial_state     = {});
 
   /**
    * The deformation gradient at point @p q of @p table.

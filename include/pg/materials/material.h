@@ -2,8 +2,9 @@
 #define pg_materials_material_h
 
 #include <pg/base/global.h>
-#include <pg/base/parameters.h>
+#include <pg/materials/material_parameters.h>
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/tensor.h>
 
 #include <memory>
@@ -52,10 +53,81 @@ namespace pg
       /** Strain energy per reference volume W(F). */
       virtual double
       strain_energy_density(const Tensor<2, dim> &F) const = 0;
+
+      /**
+       * @name State (history) variables
+       *
+       * A material with history (plasticity, damage, viscosity) keeps
+       * n_state_variables() numbers per evaluation point, stored by a
+       * QuadraturePointHistory in two copies: the committed state of the
+       * last accepted load step and the trial state of the current Newton
+       * iterate. The contract of evaluate_with_state():
+       * - it reads @p committed_state (the state at the end of the last
+       *   accepted step) and F, and writes the whole @p trial_state (the
+       *   state at F), so that the result depends on (F, committed) only;
+       * - it never reads @p trial_state, so a failed Newton iteration or a
+       *   step cut needs no clean-up beyond revert() of the history, and
+       *   evaluating twice (residual and tangent) gives the same result;
+       * - it is const and touches nothing but its two slices, so points
+       *   may be evaluated concurrently (WorkStream) without locks;
+       * - P and A are consistent: A = dP/dF at fixed committed state (the
+       *   algorithmic tangent of the update).
+       * The stateless functions above describe a stateful material at its
+       * initial state (initialize_state()).
+       */
+      /** @{ */
+
+      /** Number of state variables per evaluation point (default 0). */
+      virtual unsigned int
+      n_state_variables() const
+      {
+        return 0;
+      }
+
+      /**
+       * Write the initial state (n_state_variables() numbers) to @p state.
+       * The default sets every entry to zero.
+       */
+      virtual void
+      initialize_state(const ArrayView<double> &state) const
+      {
+        AssertDimension(state.size(), n_state_variables());
+        for (double &value : state)
+          value = 0.;
+      }
+
+      /**
+       * The stress @p P and, unless @p A is nullptr, the tangent *@p A at
+       * @p F from the committed state; writes the trial state (see the
+       * contract above; both slices have n_state_variables() entries). The
+       * default, for stateless materials, forwards to evaluate(F, P, A) or
+       * first_piola_stress(F). (A name of its own, not an overload of
+       * evaluate(), so that a stateless material overriding evaluate()
+       * does not hide it.)
+       */
+      virtual void
+      evaluate_with_state(const Tensor<2, dim>          &F,
+                          const ArrayView<const double> &committed_state,
+                          const ArrayView<double>       &trial_state,
+                          Tensor<2, dim>                &P,
+                          Tensor<4, dim>                *A) const
+      {
+        (void)committed_state;
+        (void)trial_state;
+        AssertDimension(committed_state.size(), n_state_variables());
+        AssertDimension(trial_state.size(), n_state_variables());
+        if (A != nullptr)
+          evaluate(F, P, *A);
+        else
+          P = first_piola_stress(F);
+      }
+      /** @} */
     };
 
     /**
-     * Create the material named by 'Model' in subsection 'Material'.
+     * Create the material named by 'Model' in subsection 'Material', looked
+     * up in material_registry() (material_registry.h). Throws
+     * ExcBadParameter listing the registered names for an unknown name.
      */
     template <int dim>
     std::unique_ptr<Material<dim>>
