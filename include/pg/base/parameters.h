@@ -28,33 +28,13 @@ namespace pg
    * The parameters of a pg run, one struct per top-level subsection of the
    * parameter file (step-44 style). Each struct lives in the folder of the
    * code that uses it (mesh/geometry_parameters.h, solvers/solver_parameters.h,
-   * ...); this file adds Material and AllParameters, the parameters of the run
-   * as a whole. Every entry is documented where it is declared;
-   * `pg_solve --print-parameters` prints that documentation.
+   * ...); Material is in materials/material_parameters.h; this file adds
+   * AllParameters, the parameters of the run as a whole. Every entry is
+   * documented where it is declared; `pg_solve --print-parameters` prints that
+   * documentation.
    */
   namespace Parameters
   {
-    /** linear elastic | saint venant kirchhoff | neo-Hooke */
-      std::string model;
-      double      youngs_modulus;
-      double      poissons_ratio;
-      double      density;
-      /** strain | stress (2-D only) */
-      std::string plane;
-
-      /** Lame's first parameter of the 3-D material. */
-      double
-      lambda() const;
-      /** Shear modulus. */
-      double
-      mu() const;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
     /**
      * All parameters of a run in @p dim dimensions, including the parsed
      * functions of the boundary conditions and of the exact solution. The
