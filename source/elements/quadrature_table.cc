@@ -87,12 +87,14 @@ namespace pg
      * C_q^{ik}_{jl} = w_q A_q,ijkl, X^{ik} = [B_1 C_1^{ik} | ... | B_Q
      * C_Q^{ik}] and Y = [B_1 | ... | B_Q]. The inner dimension Q dim makes the
      * product efficient, and the major symmetry A_ijkl = A_klij gives
-     * K^{ki} = (K^{ik})^T, so only i <= k is computed.
+     * K^{ki} = (K^{ik})^T, so only i <= k is computed; without it
+     * (@p major_symmetry false, e.g. a damage tangent) every (i, k) is.
      */
     template <int dim>
     void
     bubnov_galerkin_tangent(const QuadratureTable<dim> &table,
                             const std::vector<double>  &weighted_tangents,
+                            const bool                  major_symmetry,
                             FullMatrix<double>         &tangent)
     {
       using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
@@ -108,7 +110,7 @@ namespace pg
       const unsigned int n_dofs = n * dim;
       double *const      K      = &tangent(0, 0);
       for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int k = i; k < dim; ++k)
+        for (unsigned int k = (major_symmetry ? i : 0); k < dim; ++k)
           {
             for (unsigned int q = 0; q < nq; ++q)
               {
@@ -128,7 +130,8 @@ namespace pg
               for (unsigned int b = 0; b < n; ++b)
                 {
                   K[(a * dim + i) * n_dofs + b * dim + k] = Kik(a, b);
-                  K[(b * dim + k) * n_dofs + a * dim + i] = Kik(a, b);
+                  if (major_symmetry)
+                    K[(b * dim + k) * n_dofs + a * dim + i] = Kik(a, b);
                 }
           }
     }
@@ -295,7 +298,10 @@ namespace pg
           }
       }
     if (dense_tangent && table.n_points() > 0)
-      bubnov_galerkin_tangent(table, weighted_tangents, *tangent);
+      bubnov_galerkin_tangent(table,
+                              weighted_tangents,
+                              material.tangent_has_major_symmetry(),
+                              *tangent);
   }
 
 

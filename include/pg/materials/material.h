@@ -55,6 +55,19 @@ namespace pg
       strain_energy_density(const Tensor<2, dim> &F) const = 0;
 
       /**
+       * Whether A_ABCD = A_CDAB (true for hyperelastic models, the
+       * default). The kernel then computes half of a Bubnov-Galerkin
+       * tangent and mirrors it; a model whose (algorithmic) tangent lacks
+       * the symmetry (damage, non-associative plasticity) must return
+       * false.
+       */
+      virtual bool
+      tangent_has_major_symmetry() const
+      {
+        return true;
+      }
+
+      /**
        * @name State (history) variables
        *
        * A material with history (plasticity, damage, viscosity) keeps
