@@ -454,6 +454,11 @@ namespace pg
     std::unique_ptr<Q1CellGroup<dim>>  q1_cells;
     std::unique_ptr<ElementGroup<dim>> family_group;
     std::unique_ptr<Assembler<dim>>    assembler;
+    /**
+     * The material state at the groups' evaluation points: committed after
+     * every accepted (sub)step, reverted after a cut.
+     */
+    QuadraturePointHistory history;
 
     /** The first failure of the last assembly on this rank (or empty). */
     std::string failure;
@@ -815,6 +820,15 @@ namespace pg
       }
     pcout << "  DoFs:            " << dof_handler.n_dofs() << "\n"
           << "  matrix nonzeros: " << summary.matrix_nonzeros << std::endl;
+
+    // The state at every evaluation point of every group (the tables are
+    // final now: the VC correction keeps their points).
+    history.reinit(assembler->evaluation_points(),
+                   material->n_state_variables(),
+                   [this](const ArrayView<double> &state) {
+                     material->initialize_state(state);
+                   });
+    assembler->set_history(&history);
   }
 
 
@@ -2288,10 +2302,14 @@ namespace pg
     stepping.solve = [this](const double t, unsigned int &iterations) {
       return solve_step(t, iterations);
     };
-    stepping.commit = [this]() { converged_solution = solution_owned; };
+    stepping.commit = [this]() {
+      converged_solution = solution_owned;
+      history.commit();
+    };
     stepping.revert = [this]() {
       solution_owned = converged_solution;
       update_full_solution();
+      history.revert();
     };
     stepping.step_done = [this](const unsigned int step,
                                 const double       t,
@@ -2582,6 +2600,7 @@ namespace pg
     };
     operations.step_done = [&](const unsigned int step,
                                const unsigned int iterations) {
+      history.commit();
       summary.newton_iterations += iterations;
       summary.load_steps                 = step;
       summary.newton_residuals_last_step = integrator->last_residuals;
@@ -2594,6 +2613,7 @@ namespace pg
       postprocess_timer.stop();
     };
     operations.give_up = [&](const unsigned int last_step, const double t) {
+      history.revert();
       summary.converged = false;
       write_files(last_step, t);
     };

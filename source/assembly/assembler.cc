@@ -61,6 +61,28 @@ namespace pg
 
   template <int dim>
   void
+  Assembler<dim>::set_history(QuadraturePointHistory *history_)
+  {
+    history = history_;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<unsigned int>>
+  Assembler<dim>::evaluation_points() const
+  {
+    std::vector<std::vector<unsigned int>> n(groups.size());
+    for (unsigned int g = 0; g < groups.size(); ++g)
+      for (unsigned int e = 0; e < groups[g]->n_elements(); ++e)
+        n[g].push_back(groups[g]->n_evaluation_points(e));
+    return n;
+  }
+
+
+
+  template <int dim>
+  void
   Assembler<dim>::add_sparsity(DynamicSparsityPattern &sparsity) const
   {
     for (const ElementGroup<dim> *group : groups)
@@ -182,7 +204,17 @@ namespace pg
             try
               {
                 local.with_matrix = with_matrix;
-                group.assemble(*it, u, *scratch.scratch, local);
+                ElementHistory element_history;
+                if (history != nullptr && history->n_variables() > 0)
+                  {
+                    element_history.committed = history->committed(g, *it);
+                    element_history.trial     = history->trial(g, *it);
+                  }
+                group.assemble(*it,
+                               u,
+                               element_history,
+                               *scratch.scratch,
+                               local);
                 if (!all_finite(local.residual,
                                 with_matrix ? &local.matrix : nullptr))
                   throw std::runtime_error(

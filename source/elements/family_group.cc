@@ -153,6 +153,7 @@ namespace pg
   void
   FamilyGroup<dim>::assemble(const unsigned int    e,
                              const Vector<double> &u,
+                             const ElementHistory &history,
                              GroupScratch         &scratch_base,
                              LocalSystem          &local) const
   {
@@ -162,7 +163,9 @@ namespace pg
                      scratch.y,
                      material,
                      local.residual,
-                     local.with_matrix ? &local.matrix : nullptr);
+                     local.with_matrix ? &local.matrix : nullptr,
+                     history.committed,
+                     history.trial);
   }
 
 
@@ -228,8 +231,9 @@ namespace pg
   void
   CpdGroup<dim>::assemble(const unsigned int    e,
                           const Vector<double> &u,
-                          GroupScratch         &scratch_base,
-                          LocalSystem          &local) const
+                          const ElementHistory &,
+                          GroupScratch &scratch_base,
+                          LocalSystem  &local) const
   {
     auto &scratch = static_cast<FamilyScratch<dim> &>(scratch_base);
     this->gather(e, u, local.dofs, scratch.y);

@@ -102,6 +102,7 @@ namespace pg
   void
   Q1CellGroup<dim>::assemble(const unsigned int    e,
                              const Vector<double> &u,
+                             const ElementHistory &history,
                              GroupScratch         &scratch_base,
                              LocalSystem          &local) const
   {
@@ -122,7 +123,9 @@ namespace pg
                      scratch.y,
                      material,
                      local.residual,
-                     local.with_matrix ? &local.matrix : nullptr);
+                     local.with_matrix ? &local.matrix : nullptr,
+                     history.committed,
+                     history.trial);
     loads.add_body_force(scratch.fe_values, local.residual);
     loads.add_face_tractions(cell, scratch.fe_face_values, local.residual);
   }

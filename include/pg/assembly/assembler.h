@@ -4,6 +4,7 @@
 #include <pg/base/global.h>
 #include <pg/base/linear_algebra.h>
 #include <pg/elements/element_group.h>
+#include <pg/history/quadrature_point_history.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -41,6 +42,18 @@ namespace pg
      */
     Assembler(const AffineConstraints<double>        &constraints,
               const std::vector<ElementGroup<dim> *> &groups);
+
+    /**
+     * Let every element read and write its slices of @p history (keyed by
+     * the groups' order); without it, elements get empty slices (stateless
+     * materials).
+     */
+    void
+    set_history(QuadraturePointHistory *history);
+
+    /** Per group and element: the number of evaluation points. */
+    std::vector<std::vector<unsigned int>>
+    evaluation_points() const;
 
     /** The couplings of all groups' elements. */
     void
@@ -98,6 +111,7 @@ namespace pg
     const AffineConstraints<double>       &constraints;
     const std::vector<ElementGroup<dim> *> groups;
     std::vector<double>                    seconds;
+    QuadraturePointHistory                *history = nullptr;
     /** The targets of the running assembly. */
     LinearAlgebra::SparseMatrix *matrix = nullptr;
     LinearAlgebra::Vector       *rhs    = nullptr;

@@ -3,6 +3,7 @@
 
 #include <pg/base/global.h>
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/point.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -25,6 +26,18 @@ namespace pg
 
     virtual std::unique_ptr<GroupScratch>
     clone() const = 0;
+  };
+
+  /**
+   * The element's slices of the QuadraturePointHistory: the committed state
+   * it reads and the trial state it writes, n_evaluation_points() times the
+   * material's n_state_variables() values each (empty for stateless
+   * materials).
+   */
+  struct ElementHistory
+  {
+    ArrayView<const double> committed;
+    ArrayView<double>       trial;
   };
 
   /** What one element hands to the global system. */
@@ -86,12 +99,14 @@ namespace pg
 
     /**
      * The local system of element @p e at the displacement @p u (indexed by
-     * global DoF): dofs, residual and (if local.with_matrix) the tangent.
+     * global DoF): dofs, residual and (if local.with_matrix) the tangent,
+     * reading the committed and writing the trial state of @p history.
      * Throws with a message on failure.
      */
     virtual void
     assemble(const unsigned int    e,
              const Vector<double> &u,
+             const ElementHistory &history,
              GroupScratch         &scratch,
              LocalSystem          &local) const = 0;
 

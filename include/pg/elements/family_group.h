@@ -83,6 +83,7 @@ namespace pg
     void
     assemble(const unsigned int    e,
              const Vector<double> &u,
+             const ElementHistory &history,
              GroupScratch         &scratch,
              LocalSystem          &local) const override;
 
@@ -125,6 +126,7 @@ namespace pg
     void
     assemble(const unsigned int    e,
              const Vector<double> &u,
+             const ElementHistory &history,
              GroupScratch         &scratch,
              LocalSystem          &local) const override;
 

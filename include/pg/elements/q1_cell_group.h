@@ -46,6 +46,7 @@ namespace pg
     void
     assemble(const unsigned int    e,
              const Vector<double> &u,
+             const ElementHistory &history,
              GroupScratch         &scratch,
              LocalSystem          &local) const override;
 
