@@ -7,6 +7,7 @@
 #include <pg/base/formulation_code.h>
 #include <pg/base/linear_algebra.h>
 #include <pg/constraints/boundary_constraints.h>
+#include <pg/elements/correction_system.h>
 #include <pg/elements/cpd_interactions.h>
 #include <pg/elements/element_group.h>
 #include <pg/elements/family_elements.h>
@@ -15,7 +16,7 @@
 #include <pg/elements/q1_cell.h>
 #include <pg/elements/q1_cell_group.h>
 #include <pg/elements/quadrature_table.h>
-#include <pg/elements/second_order_correction.h>
+#include <pg/elements/unit_stress_residual.h>
 #include <pg/families/family_set.h>
 #include <pg/materials/material.h>
 #include <pg/mesh/mesh_generator.h>
@@ -195,33 +196,20 @@ namespace pg
 
     /**
      * d^k of every particle from the current family tables (summed over
-     * all ranks), and the largest interior value for the summary.
+     * all ranks), the largest interior value for the summary and the
+     * boundary-area weights of the Neumann loads.
      */
     void
     compute_unit_stress_residual();
 
     /**
-     * Solve the VC system once (pg-methods.md section 11.4-11.7), correct
-     * the test (PBG: and trial) functions and rebuild the family tables.
+     * Build and solve the VC (or VC2) system (pg-methods.md sections
+     * 11.4-11.7) in correction_system, hand the factors to the family
+     * elements (PBG: test = trial corrected), record max |alpha^k| h,
+     * rebuild the family tables and d^k.
      */
     void
     correct_variational_consistency();
-
-    /**
-     * VC2 (section 11.6): the first- and second-order correction of PPG2
-     * with option s, then rebuild the family tables.
-     */
-    void
-    correct_second_order_consistency();
-
-    /**
-     * Hand the VC factors (and the VC2 factors, if any) to the family
-     * elements, record max |alpha^k| h, rebuild the family tables and d^k.
-     */
-    void
-    apply_correction_factors(
-      const std::vector<Tensor<1, dim>> &alpha,
-      const std::vector<Tensor<2, dim>> &second_order_alpha = {});
 
     /** Set the time of every parsed function to the load factor @p t. */
     void
@@ -444,9 +432,8 @@ namespace pg
      */
     std::vector<std::map<types::boundary_id, double>> boundary_area_weights;
 
-    /** Compute boundary_area_weights from the current d^k. */
-    void
-    compute_boundary_area_weights();
+    /** The VC system, with its own matrix (VC codes only). */
+    std::unique_ptr<CorrectionSystem<dim>> correction_system;
 
     /** The dead loads of 'Boundary conditions' and the body force. */
     const Loads<dim> loads;
@@ -849,129 +836,16 @@ namespace pg
 
   template <int dim>
   void
-  Problem<dim>::Implementation::compute_boundary_area_weights()
-  {
-    boundary_area_weights.assign(particles.n_particles(), {});
-    for (unsigned int k = 0; k < particles.n_particles(); ++k)
-      {
-        const auto &areas = particles.boundary_area_vectors(k);
-        if (areas.empty())
-          continue;
-        // least squares d^k = sum_b c_b n_b (the normals are independent at
-        // corners; parts with parallel normals share by projection)
-        const unsigned int          m = areas.size();
-        std::vector<Tensor<1, dim>> n;
-        for (const auto &area : areas)
-          n.push_back(area.second / area.second.norm());
-        FullMatrix<double> G(m, m);
-        Vector<double>     rhs(m), c(m);
-        for (unsigned int a = 0; a < m; ++a)
-          {
-            rhs(a) = n[a] * unit_stress[k];
-            for (unsigned int b = 0; b < m; ++b)
-              G(a, b) = n[a] * n[b];
-          }
-        bool independent = (m <= dim);
-        if (independent)
-          {
-            FullMatrix<double> copy(G);
-            independent = std::abs(copy.determinant()) > 1e-6;
-          }
-        if (independent)
-          {
-            G.gauss_jordan();
-            G.vmult(c, rhs);
-          }
-        else
-          c = rhs;
-        unsigned int a = 0;
-        for (const auto &area : areas)
-          boundary_area_weights[k][area.first] = c(a++);
-      }
-  }
-
-
-
-  template <int dim>
-  void
   Problem<dim>::Implementation::compute_unit_stress_residual()
   {
-    std::vector<double>         d(particles.n_particles() * dim, 0.);
-    std::vector<Tensor<1, dim>> local;
-    for (unsigned int f = 0; f < owned_families.size(); ++f)
-      {
-        const auto members = families.members(owned_families[f]);
-        local.assign(members.size(), Tensor<1, dim>());
-        add_unit_stress_residual(family_tables[f], local);
-        for (unsigned int a = 0; a < members.size(); ++a)
-          for (unsigned int c = 0; c < dim; ++c)
-            d[members[a] * dim + c] += local[a][c];
-      }
-    Utilities::MPI::sum(d, comm, d);
-    unit_stress.resize(particles.n_particles());
-    summary.max_interior_unit_stress_residual = 0;
-    for (unsigned int k = 0; k < particles.n_particles(); ++k)
-      {
-        for (unsigned int c = 0; c < dim; ++c)
-          unit_stress[k][c] = d[k * dim + c];
-        if (particles.boundary_area_vectors(k).empty() &&
-            !particles.on_interface(k))
-          summary.max_interior_unit_stress_residual =
-            std::max(summary.max_interior_unit_stress_residual,
-                     unit_stress[k].norm() /
-                       std::pow(particles.spacing(k), dim - 1));
-      }
-    compute_boundary_area_weights();
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::correct_second_order_consistency()
-  {
-    const unsigned int n = particles.n_particles();
-    std::vector<bool>  fixed(n, false);
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        AssertThrow(!particles.on_interface(k),
-                    ExcBadParameter("Discretization/Formulation",
-                                    formulation.text,
-                                    "VC2 needs a body that is meshfree "
-                                    "everywhere: set 'Meshfree region = all' "
-                                    "in subsection 'Geometry', or use a "
-                                    "first-order VC code."));
-        fixed[k] = !particles.boundary_area_vectors(k).empty();
-      }
-    const SecondOrderCorrection<dim> correction =
-      solve_second_order_correction(particles,
-                                    families,
-                                    *family_elements,
-                                    fixed);
-    summary.max_interior_second_order_residual =
-      correction.max_second_order_residual_after;
-    apply_correction_factors(correction.alpha, correction.second_order_alpha);
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::apply_correction_factors(
-    const std::vector<Tensor<1, dim>> &alpha,
-    const std::vector<Tensor<2, dim>> &second_order_alpha)
-  {
-    // The size of the correction, relative to the gradients (~1/h): large
-    // values mean strongly modified test functions.
-    summary.max_correction_factor = 0;
-    for (unsigned int k = 0; k < alpha.size(); ++k)
-      summary.max_correction_factor =
-        std::max(summary.max_correction_factor,
-                 alpha[k].norm() * particles.spacing(k));
-    family_elements->set_correction_factors(alpha, second_order_alpha);
-    for (unsigned int f = 0; f < owned_families.size(); ++f)
-      family_elements->build(owned_families[f], family_tables[f]);
-    compute_unit_stress_residual();
+    unit_stress = unit_stress_residual(families,
+                                       owned_families,
+                                       family_tables,
+                                       particles.n_particles(),
+                                       comm);
+    summary.max_interior_unit_stress_residual =
+      max_interior_unit_stress_residual(particles, unit_stress);
+    boundary_area_weights = pg::boundary_area_weights(particles, unit_stress);
   }
 
 
@@ -980,219 +854,27 @@ namespace pg
   void
   Problem<dim>::Implementation::correct_variational_consistency()
   {
+    if (!correction_system)
+      correction_system =
+        std::make_unique<CorrectionSystem<dim>>(formulation, comm);
+    correction_system->reinit(particles,
+                              families,
+                              *family_elements,
+                              owned_families,
+                              owned_dofs);
+    const CorrectionFactors<dim> factors =
+      correction_system->solve(unit_stress);
     if (formulation.second_order_consistency)
-      {
-        correct_second_order_consistency();
-        return;
-      }
-    using VCBoundary     = FormulationCode::VCBoundary;
-    const unsigned int n = particles.n_particles();
-    // How the rows of every particle read (section 11.5):
-    //   interior:   d^k(alpha) = target^k: 0, the area vector for p, and
-    //               on the FE/meshfree interface the area vector of the
-    //               meshfree side, so that FE and PG contributions of a
-    //               constant stress cancel there (coupled patch test),
-    //   tangential: n . alpha^k = 0 and t . d^k(alpha) = 0 (sn),
-    //   fixed:      alpha^k = 0 (s; sn at edges and corners; p at d+1
-    //               particles).
-    enum class Row
-    {
-      interior,
-      tangential,
-      fixed
-    };
-    std::vector<Row>            kind(n, Row::interior);
-    std::vector<Tensor<2, dim>> R(n, unit_symmetric_tensor<dim>());
-    std::vector<Tensor<1, dim>> normal(n), target(n);
-    std::vector<unsigned int>   surface;
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        const auto &areas = particles.boundary_area_vectors(k);
-        if (particles.on_interface(k))
-          {
-            // full target: the interface area plus any surface area
-            target[k] = particles.interface_area_vector(k);
-            for (const auto &area : areas)
-              target[k] += area.second;
-            continue;
-          }
-        if (areas.empty())
-          continue;
-        surface.push_back(k);
-        for (const auto &area : areas)
-          normal[k] += area.second;
-        if (formulation.vc_boundary == VCBoundary::p)
-          target[k] = normal[k];
-        normal[k] /= normal[k].norm();
-        if (formulation.vc_boundary == VCBoundary::s ||
-            (formulation.vc_boundary == VCBoundary::sn &&
-             particles.at_corner(k)))
-          kind[k] = Row::fixed;
-        else if (formulation.vc_boundary == VCBoundary::sn)
-          {
-            // rows: [0; t_1; t_2], the tangents orthonormal to n
-            kind[k] = Row::tangential;
-            R[k]    = Tensor<2, dim>();
-            Tensor<1, dim> t;
-            if constexpr (dim == 2)
-              {
-                t[0]    = -normal[k][1];
-                t[1]    = normal[k][0];
-                R[k][1] = t;
-              }
-            else
-              {
-                unsigned int axis = 0;
-                for (unsigned int c = 1; c < dim; ++c)
-                  if (std::abs(normal[k][c]) < std::abs(normal[k][axis]))
-                    axis = c;
-                t = Point<dim>::unit_vector(axis);
-                t -= (t * normal[k]) * normal[k];
-                t /= t.norm();
-                R[k][1] = t;
-                R[k][2] = cross_product_3d(normal[k], t);
-              }
-          }
-      }
-    // Without a free surface (option p, or particles embedded in finite
-    // elements) every row has a full target and the system has the nullity
-    // d (d + 1) of the discrete Gauss identities. Fixing alpha at d + 1
-    // particles spread over the boundary removes it (one particle for
-    // PPG2, see below); the dropped equations
-    // then hold automatically, since the targets obey the same identities.
-    bool free_surface = false;
-    for (unsigned int k = 0; k < n; ++k)
-      free_surface = free_surface || (kind[k] != Row::interior);
-    for (unsigned int k = 0; k < n; ++k)
-      if (particles.on_interface(k) &&
-          particles.boundary_area_vectors(k).empty())
-        surface.push_back(k);
-    if (formulation.vc_boundary == VCBoundary::p || !free_surface)
-      {
-        AssertThrow(surface.size() > dim,
-                    ExcMessage("The VC correction needs at least dim + 1 "
-                               "particles on the boundary of the meshfree "
-                               "region."));
-        std::vector<unsigned int> chosen = {surface[0]};
-        const auto distance_to_chosen    = [&](const unsigned int k) {
-          // distance to the affine hull of the chosen particles
-          std::vector<Tensor<1, dim>> basis;
-          for (unsigned int i = 1; i < chosen.size(); ++i)
-            {
-              Tensor<1, dim> e =
-                particles.position(chosen[i]) - particles.position(chosen[0]);
-              for (const auto &b : basis)
-                e -= (e * b) * b;
-              if (e.norm() > 0)
-                basis.push_back(e / e.norm());
-            }
-          Tensor<1, dim> r =
-            particles.position(k) - particles.position(chosen[0]);
-          for (const auto &b : basis)
-            r -= (r * b) * b;
-          return r.norm();
-        };
-        // PPG2 test functions keep only sum_k d^k = 0 (section 11.4): its
-        // nullity is d, so one particle is fixed. So is a V1 correction
-        // anywhere (PPG interface masters use V1, family_elements.cc):
-        // V1 does not preserve first-order consistency, so
-        // sum_k X^k (x) d^k depends on alpha.
-        bool first_order_identity =
-          formulation.method != FormulationCode::Method::ppg2;
-        for (unsigned int k = 0; k < n; ++k)
-          if (family_elements->family_correction_function(k) ==
-              FormulationCode::CorrectionFunction::v1)
-            first_order_identity = false;
-        const unsigned int n_fixed = (first_order_identity ? dim + 1 : 1);
-        while (chosen.size() < n_fixed)
-          {
-            unsigned int best = surface[0];
-            for (const unsigned int k : surface)
-              if (distance_to_chosen(k) > distance_to_chosen(best))
-                best = k;
-            chosen.push_back(best);
-          }
-        for (const unsigned int k : chosen)
-          kind[k] = Row::fixed;
-      }
-
-    matrix = 0;
-    rhs    = 0;
-    update = 0;
-    for (const unsigned int k : owned_families)
-      family_elements->for_each_correction_block(
-        k,
-        [&](const unsigned int    a,
-            const unsigned int    f,
-            const Tensor<2, dim> &C) {
-          if (kind[a] == Row::fixed)
-            return;
-          const Tensor<2, dim> RC = R[a] * C;
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int c = 0; c < dim; ++c)
-              if (RC[i][c] != 0.)
-                matrix.add(particles.dof(a, i), particles.dof(f, c), RC[i][c]);
-        });
-    std::vector<bool> is_particle_dof(dof_handler.n_dofs(), false);
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        for (unsigned int c = 0; c < dim; ++c)
-          is_particle_dof[particles.dof(k, c)] = true;
-        if (!owned_dofs.is_element(particles.dof(k, 0)))
-          continue;
-        const Tensor<1, dim> r = R[k] * (target[k] - unit_stress[k]);
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            const auto row = particles.dof(k, i);
-            if (kind[k] == Row::fixed)
-              matrix.add(row, row, 1.);
-            else if (kind[k] == Row::tangential && i == 0)
-              for (unsigned int c = 0; c < dim; ++c)
-                matrix.add(row, particles.dof(k, c), normal[k][c]);
-            else
-              rhs(row) = r[i];
-          }
-      }
-    for (const auto dof : owned_dofs)
-      if (!is_particle_dof[dof])
-        matrix.add(dof, dof, 1.);
-    matrix.compress(VectorOperation::add);
-    rhs.compress(VectorOperation::insert);
-
-    // The system can be singular but consistent: with FE coupling plus a
-    // free surface, affine fields tangential on the surface give rows that
-    // do not depend on alpha (doc/element-view.md section 5). A direct
-    // solve would then return an ordering-dependent member of the solution
-    // set. Iterative refinement with a slightly shifted factorization,
-    //   alpha <- alpha + (A + eps D)^{-1} (b - A alpha),  alpha_0 = 0,
-    // converges in a few steps on the regular part (eps << |lambda|) and
-    // keeps the null-space part at zero: the same factors on any number of
-    // MPI ranks. D is the largest entry of each row.
-    const unsigned int corrections =
-      solve_by_shifted_refinement(matrix, update, rhs, 1e-9, 1e-14, 50);
-    AssertThrow(corrections < 50,
-                ExcMessage("The VC system could not be solved: change "
-                           "the VC boundary option of 'Formulation' in "
-                           "subsection 'Discretization' (p, s or sn), or "
-                           "check for coincident particles (unmerged mesh "
-                           "vertices: 'Coincident vertices' in subsection "
-                           "'Geometry')."));
-    LinearAlgebra::Vector ghosted(owned_dofs, relevant_dofs, comm);
-    ghosted = update;
-    std::vector<Tensor<1, dim>> alpha(n);
-    for (unsigned int k = 0; k < n; ++k)
-      for (unsigned int c = 0; c < dim; ++c)
-        alpha[k][c] = ghosted[particles.dof(k, c)];
-    AssertThrow(std::all_of(alpha.begin(),
-                            alpha.end(),
-                            [](const Tensor<1, dim> &a) {
-                              return std::isfinite(a.norm());
-                            }),
-                ExcMessage("The VC system is singular: change the VC "
-                           "boundary option of 'Formulation' in subsection "
-                           "'Discretization' (p, s or sn)."));
-
-    apply_correction_factors(alpha);
+      summary.max_interior_second_order_residual =
+        factors.max_second_order_residual;
+    // The size of the correction, relative to the gradients (~1/h): large
+    // values mean strongly modified test functions.
+    summary.max_correction_factor = factors.max_scaled_factor(particles);
+    family_elements->set_correction_factors(factors.alpha,
+                                            factors.second_order_alpha);
+    for (unsigned int f = 0; f < owned_families.size(); ++f)
+      family_elements->build(owned_families[f], family_tables[f]);
+    compute_unit_stress_residual();
   }
 
 

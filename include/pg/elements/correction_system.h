@@ -1,0 +1,153 @@
+#ifndef pg_elements_correction_system_h
+#define pg_elements_correction_system_h
+
+#include <pg/base/formulation_code.h>
+#include <pg/base/global.h>
+#include <pg/base/linear_algebra.h>
+#include <pg/elements/family_elements.h>
+#include <pg/families/family_set.h>
+#include <pg/mesh/particle_set.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <vector>
+
+namespace pg
+{
+  /** The solution of the VC system: the factors of every particle. */
+  template <int dim>
+  struct CorrectionFactors
+  {
+    /** alpha_1^k (1/length) per particle. */
+    std::vector<Tensor<1, dim>> alpha;
+    /** VC2 only: alpha_2^k (1/length^2) per particle; empty otherwise. */
+    std::vector<Tensor<2, dim>> second_order_alpha;
+    /**
+     * VC2 only: max |D^k| / h^dim over the free particles after the
+     * correction (SecondOrderCorrection); 0 otherwise.
+     */
+    double max_second_order_residual = 0;
+
+    /** max_k |alpha^k| h_k: the size of the correction relative to ~1/h. */
+    double
+    max_scaled_factor(const ParticleSet<dim> &particles) const;
+  };
+
+
+
+  /**
+   * The variational-consistency (VC) correction system of pg-methods.md
+   * sections 11.4-11.7, with its own sparsity pattern, matrix, right-hand
+   * side and solution (the Newton tangent is not involved). The unknowns
+   * are the factors alpha^k of every particle k, the equations
+   *   d^k(alpha) = d^k(0) + sum_f C^{kf} alpha^f = target^k,
+   * with the blocks C of FamilyElements::for_each_correction_block() and
+   * the boundary option of the formulation code (section 11.5):
+   *   interior:   d^k(alpha) = target^k (0; the area vector for p and on
+   *               the FE/meshfree interface),
+   *   tangential: n . alpha^k = 0 and t . d^k(alpha) = 0 (sn),
+   *   fixed:      alpha^k = 0 (s; sn at edges and corners; p at d + 1
+   *               particles, or 1 for PPG2 and V1).
+   * Rows and columns are the global DoFs of the particles (row i of
+   * particle k is particles.dof(k, i)); all other owned DoFs get an
+   * identity row. VC2 (PPG2, section 11.6) is solved by
+   * solve_second_order_correction() with every surface particle fixed.
+   *
+   * reinit() may be called again whenever the family tables change (an
+   * updated-Lagrangian reference update, fracture); solve() then solves
+   * the new system.
+   */
+  template <int dim>
+  class CorrectionSystem
+  {
+  public:
+    /** For the VC code @p formulation on the ranks of @p comm. */
+    CorrectionSystem(const FormulationCode &formulation, const MPI_Comm comm);
+
+    /**
+     * Classify the rows, build the sparsity pattern from the correction
+     * couplings of the families in @p owned_families (this rank's) and
+     * assemble the matrix. @p owned_dofs are this rank's DoFs (the
+     * masters of @p owned_families among them). The three objects must stay
+     * alive until the next reinit(); @p elements must have its correction
+     * function values (FamilyElements::initialize()). Throws with advice
+     * if the boundary option cannot be applied.
+     */
+    void
+    reinit(const ParticleSet<dim>          &particles,
+           const FamilySet<dim>            &families,
+           const FamilyElements<dim>       &elements,
+           const std::vector<unsigned int> &owned_families,
+           const IndexSet                  &owned_dofs);
+
+    /**
+     * Solve for the factors, given the uncorrected unit-stress residual
+     * @p unit_stress d^k(0) of every particle (unit_stress_residual()).
+     * Throws with advice if the system cannot be solved or is singular.
+     * The factors are the same on every rank.
+     */
+    CorrectionFactors<dim>
+    solve(const std::vector<Tensor<1, dim>> &unit_stress);
+
+    /** The system matrix of the last reinit() (not for VC2). */
+    const LinearAlgebra::SparseMatrix &
+    system_matrix() const;
+
+  private:
+    enum class Row
+    {
+      interior,
+      tangential,
+      fixed
+    };
+
+    /** kind, R, normal and target of every particle (section 11.5). */
+    void
+    classify_rows();
+
+    /**
+     * Fix alpha at particles of @p surface spread over the boundary when
+     * the system has no free surface or the option is p.
+     */
+    void
+    fix_null_space(const std::vector<unsigned int> &surface);
+
+    /** The pattern of the correction couplings and the identity rows. */
+    void
+    make_sparsity_pattern();
+
+    /** matrix = R C on the equation rows, the constraint rows, identity. */
+    void
+    assemble_matrix();
+
+    const FormulationCode formulation;
+    const MPI_Comm        comm;
+
+    const ParticleSet<dim>    *particles = nullptr;
+    const FamilySet<dim>      *families  = nullptr;
+    const FamilyElements<dim> *elements  = nullptr;
+    std::vector<unsigned int>  owned_families;
+    IndexSet                   owned_dofs;
+    /** Owned DoFs and the DoFs of every particle (to read all alpha). */
+    IndexSet particle_dofs;
+
+    std::vector<Row> kind;
+    /**
+     * The row operator of each particle: 1, or for sn rows [0; t_1; t_2]
+     * with tangents orthonormal to the normal.
+     */
+    std::vector<Tensor<2, dim>> R;
+    std::vector<Tensor<1, dim>> normal, target;
+    /** VC2: the particles whose factors stay zero. */
+    std::vector<bool> second_order_fixed;
+
+    DynamicSparsityPattern      sparsity_pattern;
+    LinearAlgebra::SparseMatrix matrix;
+    LinearAlgebra::Vector       rhs, solution;
+  };
+} // namespace pg
+
+#endif

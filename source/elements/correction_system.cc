@@ -1,0 +1,392 @@
+#include <pg/base/exceptions.h>
+#include <pg/elements/correction_system.h>
+#include <pg/elements/second_order_correction.h>
+#include <pg/solvers/linear_solver.h>
+
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pg
+{
+  template <int dim>
+  double
+  CorrectionFactors<dim>::max_scaled_factor(
+    const ParticleSet<dim> &particles) const
+  {
+    double largest = 0;
+    for (unsigned int k = 0; k < alpha.size(); ++k)
+      largest = std::max(largest, alpha[k].norm() * particles.spacing(k));
+    return largest;
+  }
+
+
+
+  template <int dim>
+  CorrectionSystem<dim>::CorrectionSystem(const FormulationCode &formulation,
+                                          const MPI_Comm         comm)
+    : formulation(formulation)
+    , comm(comm)
+  {
+    Assert(formulation.variational_consistency, ExcInternalError());
+  }
+
+
+
+  template <int dim>
+  void
+  CorrectionSystem<dim>::reinit(const ParticleSet<dim>          &particles,
+                                const FamilySet<dim>            &families,
+                                const FamilyElements<dim>       &elements,
+                                const std::vector<unsigned int> &owned_families,
+                                const IndexSet                  &owned_dofs)
+  {
+    this->particles      = &particles;
+    this->families       = &families;
+    this->elements       = &elements;
+    this->owned_families = owned_families;
+    this->owned_dofs     = owned_dofs;
+
+    const unsigned int n = particles.n_particles();
+    if (formulation.second_order_consistency)
+      {
+        second_order_fixed.assign(n, false);
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            AssertThrow(
+              !particles.on_interface(k),
+              ExcBadParameter("Discretization/Formulation",
+                              formulation.text,
+                              "VC2 needs a body that is meshfree "
+                              "everywhere: set 'Meshfree region = all' "
+                              "in subsection 'Geometry', or use a "
+                              "first-order VC code."));
+            second_order_fixed[k] = !particles.boundary_area_vectors(k).empty();
+          }
+        return;
+      }
+
+    particle_dofs = owned_dofs;
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int c = 0; c < dim; ++c)
+        particle_dofs.add_index(particles.dof(k, c));
+    particle_dofs.compress();
+
+    classify_rows();
+    make_sparsity_pattern();
+    assemble_matrix();
+    rhs.reinit(owned_dofs, comm);
+    solution.reinit(owned_dofs, comm);
+  }
+
+
+
+  template <int dim>
+  void
+  CorrectionSystem<dim>::classify_rows()
+  {
+    using VCBoundary     = FormulationCode::VCBoundary;
+    const unsigned int n = particles->n_particles();
+    kind.assign(n, Row::interior);
+    R.assign(n, unit_symmetric_tensor<dim>());
+    normal.assign(n, Tensor<1, dim>());
+    target.assign(n, Tensor<1, dim>());
+    std::vector<unsigned int> surface;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const auto &areas = particles->boundary_area_vectors(k);
+        if (particles->on_interface(k))
+          {
+            // full target: the interface area plus any surface area, so
+            // that FE and PG contributions of a constant stress cancel
+            // there (coupled patch test)
+            target[k] = particles->interface_area_vector(k);
+            for (const auto &area : areas)
+              target[k] += area.second;
+            continue;
+          }
+        if (areas.empty())
+          continue;
+        surface.push_back(k);
+        for (const auto &area : areas)
+          normal[k] += area.second;
+        if (formulation.vc_boundary == VCBoundary::p)
+          target[k] = normal[k];
+        normal[k] /= normal[k].norm();
+        if (formulation.vc_boundary == VCBoundary::s ||
+            (formulation.vc_boundary == VCBoundary::sn &&
+             particles->at_corner(k)))
+          kind[k] = Row::fixed;
+        else if (formulation.vc_boundary == VCBoundary::sn)
+          {
+            // rows: [0; t_1; t_2], the tangents orthonormal to n
+            kind[k] = Row::tangential;
+            R[k]    = Tensor<2, dim>();
+            Tensor<1, dim> t;
+            if constexpr (dim == 2)
+              {
+                t[0]    = -normal[k][1];
+                t[1]    = normal[k][0];
+                R[k][1] = t;
+              }
+            else
+              {
+                unsigned int axis = 0;
+                for (unsigned int c = 1; c < dim; ++c)
+                  if (std::abs(normal[k][c]) < std::abs(normal[k][axis]))
+                    axis = c;
+                t = Point<dim>::unit_vector(axis);
+                t -= (t * normal[k]) * normal[k];
+                t /= t.norm();
+                R[k][1] = t;
+                R[k][2] = cross_product_3d(normal[k], t);
+              }
+          }
+      }
+    for (unsigned int k = 0; k < n; ++k)
+      if (particles->on_interface(k) &&
+          particles->boundary_area_vectors(k).empty())
+        surface.push_back(k);
+    fix_null_space(surface);
+  }
+
+
+
+  template <int dim>
+  void
+  CorrectionSystem<dim>::fix_null_space(
+    const std::vector<unsigned int> &surface)
+  {
+    // Without a free surface (option p, or particles embedded in finite
+    // elements) every row has a full target and the system has the nullity
+    // d (d + 1) of the discrete Gauss identities. Fixing alpha at d + 1
+    // particles spread over the boundary removes it (one particle for
+    // PPG2, see below); the dropped equations then hold automatically,
+    // since the targets obey the same identities.
+    const unsigned int n            = particles->n_particles();
+    bool               free_surface = false;
+    for (unsigned int k = 0; k < n; ++k)
+      free_surface = free_surface || (kind[k] != Row::interior);
+    if (formulation.vc_boundary != FormulationCode::VCBoundary::p &&
+        free_surface)
+      return;
+
+    AssertThrow(surface.size() > dim,
+                ExcMessage("The VC correction needs at least dim + 1 "
+                           "particles on the boundary of the meshfree "
+                           "region."));
+    std::vector<unsigned int> chosen             = {surface[0]};
+    const auto                distance_to_chosen = [&](const unsigned int k) {
+      // distance to the affine hull of the chosen particles
+      std::vector<Tensor<1, dim>> basis;
+      for (unsigned int i = 1; i < chosen.size(); ++i)
+        {
+          Tensor<1, dim> e =
+            particles->position(chosen[i]) - particles->position(chosen[0]);
+          for (const auto &b : basis)
+            e -= (e * b) * b;
+          if (e.norm() > 0)
+            basis.push_back(e / e.norm());
+        }
+      Tensor<1, dim> r =
+        particles->position(k) - particles->position(chosen[0]);
+      for (const auto &b : basis)
+        r -= (r * b) * b;
+      return r.norm();
+    };
+    // PPG2 test functions keep only sum_k d^k = 0 (section 11.4): its
+    // nullity is d, so one particle is fixed. So is a V1 correction
+    // anywhere (PPG interface masters use V1, family_elements.cc): V1 does
+    // not preserve first-order consistency, so sum_k X^k (x) d^k depends
+    // on alpha.
+    bool first_order_identity =
+      formulation.method != FormulationCode::Method::ppg2;
+    for (unsigned int k = 0; k < n; ++k)
+      if (elements->family_correction_function(k) ==
+          FormulationCode::CorrectionFunction::v1)
+        first_order_identity = false;
+    const unsigned int n_fixed = (first_order_identity ? dim + 1 : 1);
+    while (chosen.size() < n_fixed)
+      {
+        unsigned int best = surface[0];
+        for (const unsigned int k : surface)
+          if (distance_to_chosen(k) > distance_to_chosen(best))
+            best = k;
+        chosen.push_back(best);
+      }
+    for (const unsigned int k : chosen)
+      kind[k] = Row::fixed;
+  }
+
+
+
+  template <int dim>
+  void
+  CorrectionSystem<dim>::make_sparsity_pattern()
+  {
+    // The blocks of family k couple a member a to alpha^k (PBG, PPG2), the
+    // master to alpha^a and a to alpha^a (PPG1): one horizon, symmetric.
+    // Rows of members owned elsewhere are sent to their owners.
+    IndexSet rows = owned_dofs;
+    for (const unsigned int k : owned_families)
+      for (const unsigned int a : families->members(k))
+        for (unsigned int c = 0; c < dim; ++c)
+          rows.add_index(particles->dof(a, c));
+    rows.compress();
+    sparsity_pattern.reinit(owned_dofs.size(), owned_dofs.size(), rows);
+    const auto add_block = [&](const unsigned int a, const unsigned int f) {
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int c = 0; c < dim; ++c)
+          sparsity_pattern.add(particles->dof(a, i), particles->dof(f, c));
+    };
+    for (const unsigned int k : owned_families)
+      for (const unsigned int a : families->members(k))
+        {
+          add_block(a, k);
+          add_block(k, a);
+          add_block(a, a);
+        }
+    for (const auto dof : owned_dofs)
+      sparsity_pattern.add(dof, dof);
+    SparsityTools::distribute_sparsity_pattern(sparsity_pattern,
+                                               owned_dofs,
+                                               comm,
+                                               rows);
+    matrix.reinit(owned_dofs, owned_dofs, sparsity_pattern, comm);
+  }
+
+
+
+  template <int dim>
+  void
+  CorrectionSystem<dim>::assemble_matrix()
+  {
+    const unsigned int n = particles->n_particles();
+    for (const unsigned int k : owned_families)
+      elements->for_each_correction_block(
+        k,
+        [&](const unsigned int    a,
+            const unsigned int    f,
+            const Tensor<2, dim> &C) {
+          if (kind[a] == Row::fixed)
+            return;
+          const Tensor<2, dim> RC = R[a] * C;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int c = 0; c < dim; ++c)
+              if (RC[i][c] != 0.)
+                matrix.add(particles->dof(a, i),
+                           particles->dof(f, c),
+                           RC[i][c]);
+        });
+    std::vector<bool> is_particle_dof(owned_dofs.size(), false);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          is_particle_dof[particles->dof(k, c)] = true;
+        if (!owned_dofs.is_element(particles->dof(k, 0)))
+          continue;
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            const auto row = particles->dof(k, i);
+            if (kind[k] == Row::fixed)
+              matrix.add(row, row, 1.);
+            else if (kind[k] == Row::tangential && i == 0)
+              for (unsigned int c = 0; c < dim; ++c)
+                matrix.add(row, particles->dof(k, c), normal[k][c]);
+          }
+      }
+    for (const auto dof : owned_dofs)
+      if (!is_particle_dof[dof])
+        matrix.add(dof, dof, 1.);
+    matrix.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  CorrectionFactors<dim>
+  CorrectionSystem<dim>::solve(const std::vector<Tensor<1, dim>> &unit_stress)
+  {
+    Assert(particles != nullptr, ExcMessage("Call reinit() first."));
+    const unsigned int n = particles->n_particles();
+    AssertDimension(unit_stress.size(), n);
+    CorrectionFactors<dim> factors;
+    if (formulation.second_order_consistency)
+      {
+        const SecondOrderCorrection<dim> correction =
+          solve_second_order_correction(*particles,
+                                        *families,
+                                        *elements,
+                                        second_order_fixed);
+        factors.alpha              = correction.alpha;
+        factors.second_order_alpha = correction.second_order_alpha;
+        factors.max_second_order_residual =
+          correction.max_second_order_residual_after;
+        return factors;
+      }
+
+    rhs = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        if (!owned_dofs.is_element(particles->dof(k, 0)))
+          continue;
+        const Tensor<1, dim> r = R[k] * (target[k] - unit_stress[k]);
+        for (unsigned int i = 0; i < dim; ++i)
+          if (kind[k] == Row::interior ||
+              (kind[k] == Row::tangential && i != 0))
+            rhs(particles->dof(k, i)) = r[i];
+      }
+    rhs.compress(VectorOperation::insert);
+
+    // The system can be singular but consistent: with FE coupling plus a
+    // free surface, affine fields tangential on the surface give rows that
+    // do not depend on alpha (doc/element-view.md section 5). A direct
+    // solve would then return an ordering-dependent member of the solution
+    // set. Iterative refinement with a slightly shifted factorization,
+    //   alpha <- alpha + (A + eps D)^{-1} (b - A alpha),  alpha_0 = 0,
+    // converges in a few steps on the regular part (eps << |lambda|) and
+    // keeps the null-space part at zero: the same factors on any number of
+    // MPI ranks. D is the largest entry of each row.
+    const unsigned int corrections =
+      solve_by_shifted_refinement(matrix, solution, rhs, 1e-9, 1e-14, 50);
+    AssertThrow(corrections < 50,
+                ExcMessage("The VC system could not be solved: change "
+                           "the VC boundary option of 'Formulation' in "
+                           "subsection 'Discretization' (p, s or sn), or "
+                           "check for coincident particles (unmerged mesh "
+                           "vertices: 'Coincident vertices' in subsection "
+                           "'Geometry')."));
+    LinearAlgebra::Vector ghosted(owned_dofs, particle_dofs, comm);
+    ghosted = solution;
+    factors.alpha.resize(n);
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int c = 0; c < dim; ++c)
+        factors.alpha[k][c] = ghosted[particles->dof(k, c)];
+    AssertThrow(std::all_of(factors.alpha.begin(),
+                            factors.alpha.end(),
+                            [](const Tensor<1, dim> &a) {
+                              return std::isfinite(a.norm());
+                            }),
+                ExcMessage("The VC system is singular: change the VC "
+                           "boundary option of 'Formulation' in subsection "
+                           "'Discretization' (p, s or sn)."));
+    return factors;
+  }
+
+
+
+  template <int dim>
+  const LinearAlgebra::SparseMatrix &
+  CorrectionSystem<dim>::system_matrix() const
+  {
+    return matrix;
+  }
+
+
+
+  template struct CorrectionFactors<2>;
+  template struct CorrectionFactors<3>;
+  template class CorrectionSystem<2>;
+  template class CorrectionSystem<3>;
+} // namespace pg

@@ -1,0 +1,133 @@
+#include <pg/elements/unit_stress_residual.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pg
+{
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  unit_stress_residual(const FamilySet<dim>                    &families,
+                       const std::vector<unsigned int>         &owned_families,
+                       const std::vector<QuadratureTable<dim>> &tables,
+                       const unsigned int                       n_particles,
+                       const MPI_Comm                           comm)
+  {
+    AssertDimension(tables.size(), owned_families.size());
+    std::vector<double>         d(n_particles * dim, 0.);
+    std::vector<Tensor<1, dim>> local;
+    for (unsigned int f = 0; f < owned_families.size(); ++f)
+      {
+        const auto members = families.members(owned_families[f]);
+        local.assign(members.size(), Tensor<1, dim>());
+        add_unit_stress_residual(tables[f], local);
+        for (unsigned int a = 0; a < members.size(); ++a)
+          for (unsigned int c = 0; c < dim; ++c)
+            d[members[a] * dim + c] += local[a][c];
+      }
+    Utilities::MPI::sum(d, comm, d);
+    std::vector<Tensor<1, dim>> unit_stress(n_particles);
+    for (unsigned int k = 0; k < n_particles; ++k)
+      for (unsigned int c = 0; c < dim; ++c)
+        unit_stress[k][c] = d[k * dim + c];
+    return unit_stress;
+  }
+
+
+
+  template <int dim>
+  double
+  max_interior_unit_stress_residual(
+    const ParticleSet<dim>            &particles,
+    const std::vector<Tensor<1, dim>> &unit_stress)
+  {
+    AssertDimension(unit_stress.size(), particles.n_particles());
+    double largest = 0;
+    for (unsigned int k = 0; k < particles.n_particles(); ++k)
+      if (particles.boundary_area_vectors(k).empty() &&
+          !particles.on_interface(k))
+        largest = std::max(largest,
+                           unit_stress[k].norm() /
+                             std::pow(particles.spacing(k), dim - 1));
+    return largest;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::map<types::boundary_id, double>>
+  boundary_area_weights(const ParticleSet<dim>            &particles,
+                        const std::vector<Tensor<1, dim>> &unit_stress)
+  {
+    AssertDimension(unit_stress.size(), particles.n_particles());
+    std::vector<std::map<types::boundary_id, double>> weights(
+      particles.n_particles());
+    for (unsigned int k = 0; k < particles.n_particles(); ++k)
+      {
+        const auto &areas = particles.boundary_area_vectors(k);
+        if (areas.empty())
+          continue;
+        // least squares d^k = sum_b c_b n_b (the normals are independent at
+        // corners; parts with parallel normals share by projection)
+        const unsigned int          m = areas.size();
+        std::vector<Tensor<1, dim>> n;
+        for (const auto &area : areas)
+          n.push_back(area.second / area.second.norm());
+        FullMatrix<double> G(m, m);
+        Vector<double>     rhs(m), c(m);
+        for (unsigned int a = 0; a < m; ++a)
+          {
+            rhs(a) = n[a] * unit_stress[k];
+            for (unsigned int b = 0; b < m; ++b)
+              G(a, b) = n[a] * n[b];
+          }
+        bool independent = (m <= dim);
+        if (independent)
+          {
+            FullMatrix<double> copy(G);
+            independent = std::abs(copy.determinant()) > 1e-6;
+          }
+        if (independent)
+          {
+            G.gauss_jordan();
+            G.vmult(c, rhs);
+          }
+        else
+          c = rhs;
+        unsigned int a = 0;
+        for (const auto &area : areas)
+          weights[k][area.first] = c(a++);
+      }
+    return weights;
+  }
+
+
+
+  template std::vector<Tensor<1, 2>>
+  unit_stress_residual<2>(const FamilySet<2> &,
+                          const std::vector<unsigned int> &,
+                          const std::vector<QuadratureTable<2>> &,
+                          const unsigned int,
+                          const MPI_Comm);
+  template std::vector<Tensor<1, 3>>
+  unit_stress_residual<3>(const FamilySet<3> &,
+                          const std::vector<unsigned int> &,
+                          const std::vector<QuadratureTable<3>> &,
+                          const unsigned int,
+                          const MPI_Comm);
+  template double
+  max_interior_unit_stress_residual<2>(const ParticleSet<2> &,
+                                       const std::vector<Tensor<1, 2>> &);
+  template double
+  max_interior_unit_stress_residual<3>(const ParticleSet<3> &,
+                                       const std::vector<Tensor<1, 3>> &);
+  template std::vector<std::map<types::boundary_id, double>>
+  boundary_area_weights<2>(const ParticleSet<2> &,
+                           const std::vector<Tensor<1, 2>> &);
+  template std::vector<std::map<types::boundary_id, double>>
+  boundary_area_weights<3>(const ParticleSet<3> &,
+                           const std::vector<Tensor<1, 3>> &);
+} // namespace pg
