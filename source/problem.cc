@@ -22,6 +22,9 @@
 #include <pg/mesh/mesh_generator.h>
 #include <pg/mesh/particle_set.h>
 #include <pg/postprocess/output.h>
+#include <pg/postprocess/postprocessor.h>
+#include <pg/postprocess/postprocessors.h>
+#include <pg/postprocess/problem_view.h>
 #include <pg/problem.h>
 #include <pg/solvers/linear_solver.h>
 #include <pg/solvers/load_stepper.h>
@@ -57,6 +60,7 @@
 #include <iomanip>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 namespace pg
@@ -215,19 +219,27 @@ namespace pg
     void
     set_load_factor(const double t) const;
 
-    /** Point values, reactions, errors, statistics, files of a step. */
+    /**
+     * The read-only view of the problem for the postprocessors, filled on
+     * the first call (after setup).
+     */
+    const Postprocess::ProblemView<dim> &
+    view();
+
+    /**
+     * Point values, reactions, errors, statistics, files of a step: the
+     * postprocessors' execute().
+     */
     void
     postprocess(const unsigned int step,
                 const double       t,
                 const unsigned int newton_iterations);
 
-    void
-    compute_errors();
-
     /** Entries and flops of the local tangents (summary.assembly_cost). */
     void
     compute_assembly_cost();
 
+    /** statistics.txt, summary.json, timing.txt and the VTU/PVD files. */
     void
     write_files(const unsigned int step, const double t);
 
@@ -255,17 +267,13 @@ namespace pg
     assemble_inf_sup_forms(LinearAlgebra::SparseMatrix &T,
                            LinearAlgebra::SparseMatrix &S);
 
+    /** F^k of particle @p k (ProblemView::particle_deformation_gradient). */
     Tensor<2, dim>
-    particle_deformation_gradient(const unsigned int k) const;
+    particle_deformation_gradient(const unsigned int k);
 
     /**
-     * The Cauchy stress at every vertex from each side: the average over the
-     * adjacent Q1 cells (FE side) and the particle value (PG side). Writes
-     * the vertices of 'Output/Stress along boundaries' (particle values
-     * from @p particle_F, the deformation gradients at the masters) to
-     * stress_along_boundaries.txt (with the exact stress if errors are
-     * computed) and stores the largest jump of sigma_xx between the two
-     * sides at interface vertices in the summary.
+     * The nodal stresses from the particle deformation gradients
+     * @p particle_F (Postprocess::NodalStresses::write()).
      */
     void
     write_nodal_stresses(const std::vector<Tensor<2, dim>> &particle_F);
@@ -323,7 +331,7 @@ namespace pg
      * and volume of every particle (for plots).
      */
     void
-    write_particle_table(const std::vector<Tensor<2, dim>> &F) const;
+    write_particle_table(const std::vector<Tensor<2, dim>> &F);
 
     /** The disorder indicator of the particles at the current state. */
     double
@@ -381,20 +389,8 @@ namespace pg
     std::vector<
       std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>
       point_locations;
-    /** A sample of 'Output/Lines': line index, arc length, cell, reference. */
-    struct LineSampleLocation
-    {
-      unsigned int                                   line;
-      double                                         arc_length;
-      Point<dim>                                     position;
-      typename DoFHandler<dim>::active_cell_iterator cell;
-      Point<dim>                                     reference;
-    };
-    std::vector<LineSampleLocation> line_locations;
-    /** The Q1 interpolant of u_full at @p reference in @p cell. */
-    std::vector<double>
-    displacement_at(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                    const Point<dim> &reference) const;
+    /** The samples of 'Output/Lines'. */
+    std::vector<Postprocess::LineSampleLocation<dim>> line_locations;
     /** Unit-stress residual d^k of every particle (section 8.2). */
     std::vector<Tensor<1, dim>> unit_stress;
 
@@ -452,15 +448,18 @@ namespace pg
     /** Why the last failed (sub)step failed, for the final message. */
     std::string last_failure;
 
-    RunSummary                                  summary;
-    TableHandler                                statistics;
-    std::vector<std::pair<double, std::string>> pvd_cells, pvd_particles;
-    Timer                                       total_timer;
+    RunSummary   summary;
+    TableHandler statistics;
+    Timer        total_timer;
     /** Wall times (s) of the phases, reported in summary.json. */
     double time_mesh = 0, time_setup = 0, time_shape = 0, time_vc = 0,
            time_assembly = 0, time_solve = 0;
     /** Errors, statistics, output (started and stopped around them). */
     Timer postprocess_timer;
+
+    std::optional<Postprocess::ProblemView<dim>> problem_view;
+    /** Points, lines, reactions, errors, statistics, files, in order. */
+    Postprocess::Manager<dim> postprocessors;
   };
 
 
@@ -1126,23 +1125,62 @@ namespace pg
 
 
   template <int dim>
+  const Postprocess::ProblemView<dim> &
+  Problem<dim>::Implementation::view()
+  {
+    if (problem_view)
+      return *problem_view;
+    // filled once, after setup: the objects keep their addresses
+    auto &v                  = problem_view.emplace();
+    v.parameters             = &prm;
+    v.mpi_communicator       = comm;
+    v.root                   = root;
+    v.pcout                  = &pcout;
+    v.formulation            = &formulation;
+    v.material               = material.get();
+    v.triangulation          = &triangulation;
+    v.dof_handler            = &dof_handler;
+    v.fe                     = &fe;
+    v.fe_scalar              = &fe_scalar;
+    v.meshfree               = &meshfree;
+    v.particles              = &particles;
+    v.families               = &families;
+    v.family_elements        = family_elements.get();
+    v.cpd                    = cpd.get();
+    v.owned_families         = &owned_families;
+    v.family_tables          = &family_tables;
+    v.owned_fe_cells         = &owned_fe_cells;
+    v.owned_dofs             = &owned_dofs;
+    v.u_full                 = &u_full;
+    v.force                  = &force;
+    v.constraints            = &constraints;
+    v.unit_stress            = &unit_stress;
+    v.point_locations        = &point_locations;
+    v.line_locations         = &line_locations;
+    v.mesh_diameter          = &mesh_diameter;
+    v.time_mesh              = &time_mesh;
+    v.time_setup             = &time_setup;
+    v.time_shape             = &time_shape;
+    v.time_vc                = &time_vc;
+    v.time_assembly          = &time_assembly;
+    v.time_solve             = &time_solve;
+    v.total_timer            = &total_timer;
+    v.postprocess_timer      = &postprocess_timer;
+    v.set_load_factor        = [this](const double t) { set_load_factor(t); };
+    v.add_dynamic_statistics = [this](const double t) {
+      add_energy_statistics(t);
+    };
+    return *problem_view;
+  }
+
+
+
+  template <int dim>
   Tensor<2, dim>
   Problem<dim>::Implementation::particle_deformation_gradient(
-    const unsigned int k) const
+    const unsigned int k)
   {
-    const auto     members = families.members(k);
-    const auto    &B       = family_elements->master_gradients(k);
-    Tensor<2, dim> F;
-    for (unsigned int b = 0; b < members.size(); ++b)
-      for (unsigned int i = 0; i < dim; ++i)
-        {
-          const double y = particles.position(members[b])[i] -
-                           particles.position(k)[i] +
-                           u_full[particles.dof(members[b], i)];
-          for (unsigned int j = 0; j < dim; ++j)
-            F[i][j] += y * B[b][j];
-        }
-    return F;
+    return view().particle_deformation_gradient(k);
   }
 
 
@@ -1152,121 +1190,7 @@ namespace pg
   Problem<dim>::Implementation::write_nodal_stresses(
     const std::vector<Tensor<2, dim>> &particle_F)
   {
-    const unsigned int        n_vertices = triangulation.n_vertices();
-    std::vector<Tensor<2, 3>> fe_stress(n_vertices);
-    std::vector<unsigned int> fe_cells(n_vertices, 0);
-    // QTrapezoid's points are the vertices in deal.II's numbering.
-    FEValues<dim> fe_values(fe, QTrapezoid<dim>(), update_gradients);
-    std::vector<Tensor<2, dim>> gradients(fe_values.n_quadrature_points);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!meshfree[cell->active_cell_index()])
-        {
-          fe_values.reinit(cell);
-          fe_values[FEValuesExtractors::Vector(0)]
-            .get_function_gradients(u_full, gradients);
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              fe_stress[cell->vertex_index(v)] += material->cauchy_stress(
-                unit_symmetric_tensor<dim>() + gradients[v]);
-              ++fe_cells[cell->vertex_index(v)];
-            }
-        }
-    std::vector<int> particle_at(n_vertices, -1);
-    for (unsigned int k = 0; k < particles.n_particles(); ++k)
-      particle_at[particles.vertex(k)] = k;
-
-    summary.max_interface_stress_jump = 0;
-    for (unsigned int k = 0; k < particles.n_particles(); ++k)
-      if (fe_cells[particles.vertex(k)] > 0)
-        summary.max_interface_stress_jump =
-          std::max(summary.max_interface_stress_jump,
-                   std::abs(material->cauchy_stress(particle_F[k])[0][0] -
-                            fe_stress[particles.vertex(k)][0][0] /
-                              fe_cells[particles.vertex(k)]));
-
-    const auto nodal_stress = [&](const unsigned int vertex) {
-      return particle_at[vertex] >= 0 ?
-               material->cauchy_stress(particle_F[particle_at[vertex]]) :
-               Tensor<2, 3>(fe_stress[vertex] / fe_cells[vertex]);
-    };
-    const auto exact_stress = [&](const Point<dim> &p) {
-      return material->cauchy_stress(unit_symmetric_tensor<dim>() +
-                                     exact_displacement_gradient(p));
-    };
-    const auto in_plane = [](const Tensor<2, 3> &sigma) {
-      std::vector<double> values;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          values.push_back(sigma[i][j]);
-      return values;
-    };
-
-    // the stress at the vertex nearest each named point
-    summary.point_stresses.clear();
-    summary.point_exact_stresses.clear();
-    const auto &vertices = triangulation.get_vertices();
-    const auto &used     = triangulation.get_used_vertices();
-    for (const auto &[name, coordinates] : prm.output.points)
-      {
-        Point<dim> p;
-        for (unsigned int c = 0; c < dim; ++c)
-          p[c] = coordinates[c];
-        unsigned int nearest = numbers::invalid_unsigned_int;
-        for (unsigned int v = 0; v < vertices.size(); ++v)
-          if (used[v] && (particle_at[v] >= 0 || fe_cells[v] > 0) &&
-              (nearest == numbers::invalid_unsigned_int ||
-               p.distance_square(vertices[v]) <
-                 p.distance_square(vertices[nearest])))
-            nearest = v;
-        if (nearest == numbers::invalid_unsigned_int)
-          continue;
-        summary.point_stresses.emplace_back(name,
-                                            in_plane(nodal_stress(nearest)));
-        if (prm.compute_errors)
-          summary.point_exact_stresses.emplace_back(name,
-                                                    in_plane(exact_stress(
-                                                      vertices[nearest])));
-      }
-
-    const auto &ids = prm.output.stress_boundaries;
-    if (!root || ids.empty())
-      return;
-    std::ofstream table(prm.output.directory + "/stress_along_boundaries.txt");
-    table << "# Cauchy stress at the vertices of the boundaries "
-          << Patterns::Tools::Convert<std::vector<int>>::to_string(
-               std::vector<int>(ids.begin(), ids.end()))
-          << " (particles: the particle value; FE vertices: the average of "
-             "the adjacent cells)\n# boundary_id x y"
-          << (dim == 3 ? " z" : "") << " sigma_xx sigma_yy sigma_xy"
-          << (prm.compute_errors ? " exact_xx exact_yy exact_xy" : "")
-          << " side\n"
-          << std::setprecision(8);
-    std::vector<bool> written(n_vertices, false);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            std::find(ids.begin(), ids.end(), cell->face(f)->boundary_id()) !=
-              ids.end())
-          for (const unsigned int v : cell->face(f)->vertex_indices())
-            {
-              const unsigned int vertex = cell->face(f)->vertex_index(v);
-              if (written[vertex])
-                continue;
-              written[vertex]          = true;
-              const bool         pg    = particle_at[vertex] >= 0;
-              const Tensor<2, 3> sigma = nodal_stress(vertex);
-              table << static_cast<int>(cell->face(f)->boundary_id()) << " "
-                    << cell->face(f)->vertex(v) << " " << sigma[0][0] << " "
-                    << sigma[1][1] << " " << sigma[0][1];
-              if (prm.compute_errors)
-                {
-                  const Tensor<2, 3> exact =
-                    exact_stress(cell->face(f)->vertex(v));
-                  table << " " << exact[0][0] << " " << exact[1][1] << " "
-                        << exact[0][1];
-                }
-              table << (pg ? " PG\n" : " FE\n");
-            }
+    Postprocess::NodalStresses<dim>::write(view(), particle_F, summary);
   }
 
 
@@ -1276,32 +1200,7 @@ namespace pg
   Problem<dim>::Implementation::exact_displacement_gradient(
     const Point<dim> &p) const
   {
-    Tensor<2, dim> G;
-    if (prm.exact_gradient)
-      {
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            G[i][j] = prm.exact_gradient->value(p, i * dim + j);
-        return G;
-      }
-    // Without 'Gradient expression': the fourth-order central difference
-    //   (-u(p + 2h) + 8 u(p + h) - 8 u(p - h) + u(p - 2h)) / (12 h)
-    // with h = 1e-4 of the mesh diameter. Polynomials to degree 4 are
-    // differentiated to round-off (about 1e-13 relative), smooth fields to
-    // about 1e-12 (sin(pi x / 2) on [-1, 1]^2: 2e-13; Kirsch's field at the
-    // hole: 1e-11). The deal.II default (central, h = 1e-8) stops at 1e-9.
-    const double h = 1e-4 * mesh_diameter;
-    for (unsigned int j = 0; j < dim; ++j)
-      {
-        const Tensor<1, dim> e = h * Point<dim>::unit_vector(j);
-        for (unsigned int i = 0; i < dim; ++i)
-          G[i][j] = (-prm.exact_solution.value(p + 2 * e, i) +
-                     8 * prm.exact_solution.value(p + e, i) -
-                     8 * prm.exact_solution.value(p - e, i) +
-                     prm.exact_solution.value(p - 2 * e, i)) /
-                    (12 * h);
-      }
-    return G;
+    return Postprocess::exact_displacement_gradient(prm, mesh_diameter, p);
   }
 
 
@@ -1340,124 +1239,7 @@ namespace pg
   void
   Problem<dim>::Implementation::compute_assembly_cost()
   {
-    auto &cost          = summary.assembly_cost;
-    cost.fe_entries     = 0;
-    cost.fe_flops       = 0;
-    cost.family_entries = 0;
-    cost.family_flops   = 0;
-    if (!owned_fe_cells.empty())
-      {
-        // every Q1 cell has the same table size
-        FEValues<dim>        fe_values(fe_scalar,
-                                QGauss<dim>(2),
-                                update_gradients | update_values |
-                                  update_quadrature_points | update_JxW_values);
-        QuadratureTable<dim> table;
-        fe_values.reinit(typename Triangulation<dim>::active_cell_iterator(
-          owned_fe_cells.front()));
-        fill_q1_table(fe_values, table);
-        cost.fe_entries = owned_fe_cells.size() * tangent_entries(table);
-        cost.fe_flops   = owned_fe_cells.size() * tangent_flops(table);
-      }
-    if (cpd)
-      for (const unsigned int k : owned_families)
-        {
-          // an interaction of order n has (n + 1) dim rows and columns
-          const auto n = cpd->n_interactions(k);
-          for (unsigned int order = 0; order < 3; ++order)
-            cost.family_entries +=
-              n[order] * Utilities::fixed_power<2>((order + 2.) * dim);
-        }
-    else
-      for (const auto &table : family_tables)
-        {
-          cost.family_entries += tangent_entries(table);
-          cost.family_flops += tangent_flops(table);
-        }
-    for (double *x : {&cost.fe_entries,
-                      &cost.fe_flops,
-                      &cost.family_entries,
-                      &cost.family_flops})
-      *x = Utilities::MPI::sum(*x, comm);
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::compute_errors()
-  {
-    // eq. (7.3): FE cells by Gauss quadrature, particles by their volume
-    // with the trial gradient at the master.
-    const auto &exact = prm.exact_solution;
-    double      e0 = 0, e1 = 0, n0 = 0, n1 = 0, eE = 0, nE = 0;
-    // the energy norm of the linearised problem, G : A(1) : G
-    Tensor<2, dim> P0;
-    Tensor<4, dim> A0;
-    material->evaluate(unit_symmetric_tensor<dim>(), P0, A0);
-    const auto energy = [&A0](const Tensor<2, dim> &G) {
-      return scalar_product(G, double_contract<2, 0, 3, 1>(A0, G));
-    };
-    const QGauss<dim>                quadrature(3);
-    FEValues<dim>                    fe_values(fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_JxW_values);
-    const FEValuesExtractors::Vector u(0);
-    std::vector<Tensor<1, dim>>      values(quadrature.size());
-    std::vector<Tensor<2, dim>>      gradients(quadrature.size());
-    Vector<double>                   exact_value(dim);
-    for (const auto &cell : owned_fe_cells)
-      {
-        fe_values.reinit(cell);
-        fe_values[u].get_function_values(u_full, values);
-        fe_values[u].get_function_gradients(u_full, gradients);
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          {
-            const Point<dim> &p = fe_values.quadrature_point(q);
-            exact.vector_value(p, exact_value);
-            const Tensor<2, dim> G = exact_displacement_gradient(p);
-            for (unsigned int c = 0; c < dim; ++c)
-              {
-                e0 +=
-                  std::pow(exact_value(c) - values[q][c], 2) * fe_values.JxW(q);
-                n0 += std::pow(exact_value(c), 2) * fe_values.JxW(q);
-              }
-            e1 += (G - gradients[q]).norm_square() * fe_values.JxW(q);
-            n1 += G.norm_square() * fe_values.JxW(q);
-            eE += energy(G - gradients[q]) * fe_values.JxW(q);
-            nE += energy(G) * fe_values.JxW(q);
-          }
-      }
-    for (const unsigned int k : owned_families)
-      {
-        const Point<dim> &p = particles.position(k);
-        const double      V = particles.volume(k);
-        exact.vector_value(p, exact_value);
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            e0 += std::pow(exact_value(c) - u_full[particles.dof(k, c)], 2) * V;
-            n0 += std::pow(exact_value(c), 2) * V;
-          }
-        const Tensor<2, dim> G = exact_displacement_gradient(p);
-        const Tensor<2, dim> e =
-          G - (particle_deformation_gradient(k) - unit_symmetric_tensor<dim>());
-        e1 += e.norm_square() * V;
-        n1 += G.norm_square() * V;
-        eE += energy(e) * V;
-        nE += energy(G) * V;
-      }
-    summary.have_errors = true;
-    summary.L2          = std::sqrt(Utilities::MPI::sum(e0, comm));
-    summary.H1          = std::sqrt(Utilities::MPI::sum(e1, comm));
-    const double norm0  = std::sqrt(Utilities::MPI::sum(n0, comm));
-    const double norm1  = std::sqrt(Utilities::MPI::sum(n1, comm));
-    summary.L2_relative = norm0 > 0 ? summary.L2 / norm0 : summary.L2;
-    summary.H1_relative = norm1 > 0 ? summary.H1 / norm1 : summary.H1;
-    summary.energy     = std::sqrt(std::max(0., Utilities::MPI::sum(eE, comm)));
-    const double normE = std::sqrt(std::max(0., Utilities::MPI::sum(nE, comm)));
-    summary.energy_relative =
-      normE > 0 ? summary.energy / normE : summary.energy;
+    Postprocess::compute_assembly_cost(view(), summary);
   }
 
 
@@ -1469,139 +1251,10 @@ namespace pg
     const double       t,
     const unsigned int newton_iterations)
   {
-    // Point values from the Q1 interpolant (the nodal values at vertices).
-    summary.points.clear();
-    for (unsigned int i = 0; i < point_locations.size(); ++i)
-      summary.points.emplace_back(prm.output.points[i].first,
-                                  displacement_at(point_locations[i].first,
-                                                  point_locations[i].second));
-    summary.line_samples.clear();
-    for (const auto &sample : line_locations)
-      summary.line_samples.push_back(
-        {prm.output.lines[sample.line].name,
-         sample.arc_length,
-         std::vector<double>(sample.position.begin_raw(),
-                             sample.position.end_raw()),
-         displacement_at(sample.cell, sample.reference)});
-    if (root && !line_locations.empty())
-      {
-        std::ofstream table(prm.output.directory +
-                            "/displacement_along_lines.txt");
-        table << "# displacement along 'Output/Lines' at "
-              << (prm.time.dynamic() ? "time " : "load factor ") << t
-              << "\n# line s x y" << (dim == 3 ? " z" : "") << " u_x u_y"
-              << (dim == 3 ? " u_z" : "") << "\n"
-              << std::setprecision(10);
-        for (const auto &sample : summary.line_samples)
-          {
-            table << sample.line << " " << sample.arc_length;
-            for (const double x : sample.position)
-              table << " " << x;
-            for (const double u : sample.displacement)
-              table << " " << u;
-            table << "\n";
-          }
-      }
-
-    // Reactions: f_int - f_ext summed over the constrained components of the
-    // vertices of each Dirichlet boundary id (a vertex shared by two
-    // Dirichlet boundaries counts for both).
-    summary.reactions.clear();
-    for (const auto &[id, mask] : prm.boundary_conditions.dirichlet)
-      {
-        std::vector<bool>   counted(dof_handler.n_dofs(), false);
-        std::vector<double> reaction(dim, 0.);
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                cell->face(f)->boundary_id() == id)
-              for (const unsigned int v : cell->face(f)->vertex_indices())
-                for (unsigned int c = 0; c < dim; ++c)
-                  if (mask[c])
-                    {
-                      const auto dof = cell->face(f)->vertex_dof_index(v, c);
-                      if (!counted[dof] && owned_dofs.is_element(dof))
-                        reaction[c] += force[dof];
-                      counted[dof] = true;
-                    }
-        Utilities::MPI::sum(reaction, comm, reaction);
-        summary.reactions[id] = reaction;
-      }
-    // The same for 'Dirichlet boxes': the vertices in each box, as in
-    // make_constraints().
-    summary.box_reactions.clear();
-    const double box_tolerance = 1e-10 * mesh_diameter;
-    for (const auto &box : prm.boundary_conditions.dirichlet_boxes)
-      {
-        std::vector<bool>   counted(dof_handler.n_dofs(), false);
-        std::vector<double> reaction(dim, 0.);
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              bool inside = true;
-              for (unsigned int d = 0; d < dim; ++d)
-                inside = inside &&
-                         cell->vertex(v)[d] >= box.lower[d] - box_tolerance &&
-                         cell->vertex(v)[d] <= box.upper[d] + box_tolerance;
-              if (inside)
-                for (unsigned int c = 0; c < dim; ++c)
-                  if (box.components[c])
-                    {
-                      const auto dof = cell->vertex_dof_index(v, c);
-                      if (!counted[dof] && owned_dofs.is_element(dof))
-                        reaction[c] += force[dof];
-                      counted[dof] = true;
-                    }
-            }
-        Utilities::MPI::sum(reaction, comm, reaction);
-        summary.box_reactions.push_back(reaction);
-      }
-
-    if (prm.compute_errors)
-      {
-        set_load_factor(t);
-        compute_errors();
-      }
-
-    // statistics.txt
-    statistics.add_value("step", step);
-    statistics.add_value(prm.time.dynamic() ? "time" : "load factor", t);
-    statistics.add_value("Newton iterations", newton_iterations);
-    statistics.add_value("residual",
-                         summary.newton_residuals_last_step.empty() ?
-                           0. :
-                           summary.newton_residuals_last_step.back());
-    if (prm.time.dynamic())
-      add_energy_statistics(t);
-    for (const auto &[name, value] : summary.points)
-      for (unsigned int c = 0; c < dim; ++c)
-        statistics.add_value(name + "_u" + std::string(1, "xyz"[c]), value[c]);
-    if (summary.have_errors)
-      {
-        statistics.add_value("L2 error", summary.L2);
-        statistics.add_value("H1 error", summary.H1);
-      }
-    statistics.add_value("wall time", total_timer.wall_time());
-    statistics.set_scientific("residual", true);
-
-    write_files(step, t);
-  }
-
-
-
-  template <int dim>
-  std::vector<double>
-  Problem<dim>::Implementation::displacement_at(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const Point<dim>                                     &reference) const
-  {
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    cell->get_dof_indices(dofs);
-    std::vector<double> value(dim, 0.);
-    for (unsigned int j = 0; j < dofs.size(); ++j)
-      value[fe.system_to_component_index(j).first] +=
-        fe.shape_value(j, reference) * u_full[dofs[j]];
-    return value;
+    postprocessors.execute(view(),
+                           {step, t, newton_iterations},
+                           statistics,
+                           summary);
   }
 
 
@@ -1611,95 +1264,7 @@ namespace pg
   Problem<dim>::Implementation::write_files(const unsigned int step,
                                             const double       t)
   {
-    const std::string dir = prm.output.directory + "/";
-    summary.timing        = {{"mesh", time_mesh},
-                             {"setup", time_setup},
-                             {"shape_functions", time_shape},
-                             {"vc", time_vc},
-                             {"assembly", time_assembly},
-                             {"solve", time_solve},
-                             {"postprocess", postprocess_timer.wall_time()},
-                             {"total", total_timer.wall_time()}};
-    if (root)
-      {
-        std::ofstream stat(dir + "statistics.txt");
-        statistics.write_text(
-          stat,
-          TableHandler::table_with_separate_column_description);
-        write_summary_json(summary, dir + "summary.json");
-        std::ofstream timing(dir + "timing.txt");
-        for (const auto &[name, seconds] : summary.timing)
-          timing << std::left << std::setw(16) << name << seconds << " s\n";
-      }
-    if (!prm.output.vtu)
-      return;
-
-    DataOut<dim> data_out;
-    data_out.attach_dof_handler(dof_handler);
-    const std::vector<std::string> names(dim, "displacement");
-    data_out.add_data_vector(
-      u_full,
-      names,
-      DataOut<dim>::type_dof_data,
-      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-        dim,
-        DataComponentInterpretation::component_is_part_of_vector));
-    // meshfree cells show the particles' F (section "What a run writes")
-    std::vector<Tensor<2, dim>> particle_F(particles.n_particles());
-    std::vector<int>            particle_at(triangulation.n_vertices(), -1);
-    for (unsigned int k = 0; k < particles.n_particles(); ++k)
-      {
-        particle_F[k]                    = particle_deformation_gradient(k);
-        particle_at[particles.vertex(k)] = k;
-      }
-    const StressPostprocessor<dim> stress(
-      *material,
-      meshfree,
-      [&](const unsigned int v) -> const Tensor<2, dim> * {
-        return particle_at[v] >= 0 ? &particle_F[particle_at[v]] : nullptr;
-      });
-    data_out.add_data_vector(u_full, stress);
-    Vector<float> meshfree_cell(triangulation.n_active_cells());
-    for (unsigned int c = 0; c < meshfree.size(); ++c)
-      meshfree_cell[c] = meshfree[c];
-    data_out.add_data_vector(meshfree_cell, "meshfree");
-    data_out.build_patches();
-    const std::string cells =
-      data_out.write_vtu_with_pvtu_record(dir, "solution", step, comm, 4);
-    pvd_cells.emplace_back(t, cells);
-
-    std::vector<std::string> particle_names(dim, "displacement");
-    for (const std::string &n : stress_field_names<dim>())
-      particle_names.push_back(n);
-    particle_names.push_back("volume");
-    for (unsigned int c = 0; c < dim; ++c)
-      particle_names.push_back("unit_stress_residual");
-    ParticleOutput<dim> particle_out(particle_names);
-    std::vector<double> data, stress_values;
-    for (const unsigned int k : owned_families)
-      {
-        data.clear();
-        for (unsigned int c = 0; c < dim; ++c)
-          data.push_back(u_full[particles.dof(k, c)]);
-        stress_field_values(*material,
-                            particle_deformation_gradient(k),
-                            stress_values);
-        data.insert(data.end(), stress_values.begin(), stress_values.end());
-        data.push_back(particles.volume(k));
-        for (unsigned int c = 0; c < dim; ++c)
-          data.push_back(unit_stress[k][c]);
-        particle_out.add_particle(particles.position(k), data);
-      }
-    const std::string particles_file =
-      particle_out.write_vtu_with_pvtu_record(dir, "particles", step, comm, 4);
-    pvd_particles.emplace_back(t, particles_file);
-    if (root)
-      {
-        std::ofstream pvd(dir + "solution.pvd");
-        DataOutBase::write_pvd_record(pvd, pvd_cells);
-        std::ofstream ppvd(dir + "particles.pvd");
-        DataOutBase::write_pvd_record(ppvd, pvd_particles);
-      }
+    postprocessors.output().write(view(), step, t, statistics, summary);
   }
 
 
@@ -2011,72 +1576,8 @@ namespace pg
     LoadStepper(prm.loading, prm.output.directory, pcout).run(stepping);
     const unsigned int n_steps = prm.loading.load_steps;
     postprocess_timer.start();
-
-    // The oscillation indicator and a plain table of the particle fields
-    // (for plots) at the final state; every rank knows all particles.
-    std::vector<Tensor<2, dim>> F(particles.n_particles());
-    for (unsigned int k = 0; k < F.size(); ++k)
-      F[k] = particle_deformation_gradient(k);
-    if (particles.n_particles() > 0)
-      {
-        double oscillation = 0, deformation = 0;
-        for (unsigned int k = 0; k < F.size(); ++k)
-          {
-            Tensor<2, dim> mean;
-            double         volume = 0;
-            for (const unsigned int j : families.members(k))
-              {
-                mean += particles.volume(j) * F[j];
-                volume += particles.volume(j);
-              }
-            mean /= volume;
-            oscillation += particles.volume(k) * (F[k] - mean).norm_square();
-            deformation += particles.volume(k) *
-                           (F[k] - Tensor<2, dim>(unit_symmetric_tensor<dim>()))
-                             .norm_square();
-          }
-        summary.gradient_oscillation =
-          deformation > 0 ? std::sqrt(oscillation / deformation) : 0.;
-        write_particle_table(F);
-      }
-
-    write_nodal_stresses(F);
-
-    // Final report: normalised where a natural reference exists.
-    for (const auto &[name, value] : summary.points)
-      {
-        pcout << "  point " << name << ": u =";
-        for (const double v : value)
-          pcout << " " << v;
-        pcout << std::endl;
-      }
-    for (const auto &[id, r] : summary.reactions)
-      {
-        pcout << "  reaction on boundary " << static_cast<int>(id) << ":";
-        for (const double v : r)
-          pcout << " " << (std::abs(v) < 1e-9 ? 0. : v);
-        pcout << std::endl;
-      }
-    for (unsigned int b = 0; b < summary.box_reactions.size(); ++b)
-      {
-        pcout << "  reaction on Dirichlet box " << b + 1 << ":";
-        for (const double v : summary.box_reactions[b])
-          pcout << " " << (std::abs(v) < 1e-9 ? 0. : v);
-        pcout << std::endl;
-      }
-    if (particles.n_particles() > 0)
-      {
-        std::ostringstream oscillation;
-        oscillation << std::setprecision(3) << summary.gradient_oscillation;
-        pcout << "  gradient oscillation of the particles: "
-              << oscillation.str() << std::endl;
-      }
-    if (summary.have_errors)
-      pcout << "  errors: L2 relative = " << summary.L2_relative
-            << ", H1 relative = " << summary.H1_relative << std::endl;
-    pcout << "  total Newton iterations: " << summary.newton_iterations
-          << std::endl;
-    write_files(n_steps, 1.);
+    // the particle fields, nodal stresses, the final report and the files
+    postprocessors.finalize(view(), {n_steps, 1., 0}, statistics, summary);
   }
 
 
@@ -2084,25 +1585,9 @@ namespace pg
   template <int dim>
   void
   Problem<dim>::Implementation::write_particle_table(
-    const std::vector<Tensor<2, dim>> &F) const
+    const std::vector<Tensor<2, dim>> &F)
   {
-    if (root)
-      {
-        std::ofstream table(prm.output.directory + "/particles.txt");
-        table << "# x y" << (dim == 3 ? " z" : "") << " u_x u_y"
-              << (dim == 3 ? " u_z" : "") << " F_ij (row-major) volume\n"
-              << std::setprecision(10);
-        for (unsigned int k = 0; k < F.size(); ++k)
-          {
-            table << particles.position(k);
-            for (unsigned int c = 0; c < dim; ++c)
-              table << " " << u_full[particles.dof(k, c)];
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                table << " " << F[k][i][j];
-            table << " " << particles.volume(k) << "\n";
-          }
-      }
+    Postprocess::ParticleFields<dim>::write_table(view(), F);
   }
 
 

@@ -1,0 +1,147 @@
+#ifndef pg_postprocess_problem_view_h
+#define pg_postprocess_problem_view_h
+
+#include <pg/base/formulation_code.h>
+#include <pg/base/global.h>
+#include <pg/base/linear_algebra.h>
+#include <pg/base/parameters.h>
+#include <pg/elements/cpd_interactions.h>
+#include <pg/elements/family_elements.h>
+#include <pg/elements/quadrature_table.h>
+#include <pg/families/family_set.h>
+#include <pg/materials/material.h>
+#include <pg/mesh/particle_set.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace pg
+{
+  /**
+   * Postprocessors: what a run reports after each step and at its end
+   * (points, lines, reactions, error norms, nodal stresses, statistics,
+   * VTU/PVD and summary.json). They read the problem through ProblemView
+   * and write only the statistics table, the summary and their own files.
+   */
+  namespace Postprocess
+  {
+    /** A sample of 'Output/Lines': line index, arc length, cell, reference. */
+    template <int dim>
+    struct LineSampleLocation
+    {
+      unsigned int                                   line;
+      double                                         arc_length;
+      Point<dim>                                     position;
+      typename DoFHandler<dim>::active_cell_iterator cell;
+      Point<dim>                                     reference;
+    };
+
+    /**
+     * grad u of the exact solution at @p p: 'Gradient expression' if
+     * given, otherwise the fourth-order central difference of 'Exact
+     * solution' with h = 1e-4 @p mesh_diameter.
+     */
+    template <int dim>
+    Tensor<2, dim>
+    exact_displacement_gradient(const Parameters::AllParameters<dim> &prm,
+                                const double      mesh_diameter,
+                                const Point<dim> &p);
+
+    /**
+     * A read-only view of a set-up problem (as ASPECT's SimulatorAccess):
+     * const pointers to the objects the problem owns, filled once after
+     * setup. The objects change their values during the run (u_full,
+     * force), not their addresses, so the view stays valid. The pointers
+     * family_elements and cpd are null where the problem has none.
+     */
+    template <int dim>
+    struct ProblemView
+    {
+      using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
+
+      const Parameters::AllParameters<dim> *parameters = nullptr;
+      MPI_Comm                              mpi_communicator;
+      /** Rank 0 (which writes the text files). */
+      bool                            root        = false;
+      const ConditionalOStream       *pcout       = nullptr;
+      const FormulationCode          *formulation = nullptr;
+      const Materials::Material<dim> *material    = nullptr;
+
+      const Triangulation<dim> *triangulation = nullptr;
+      const DoFHandler<dim>    *dof_handler   = nullptr;
+      /** FESystem(FE_Q(1), dim) of the displacement and its FE_Q(1). */
+      const FiniteElement<dim> *fe = nullptr, *fe_scalar = nullptr;
+      /** Meshfree flag of every active cell (by active cell index). */
+      const std::vector<bool> *meshfree = nullptr;
+
+      const ParticleSet<dim>     *particles       = nullptr;
+      const FamilySet<dim>       *families        = nullptr;
+      const FamilyElements<dim>  *family_elements = nullptr;
+      const CpdInteractions<dim> *cpd             = nullptr;
+      /** The families (masters) and Q1 cells this rank owns. */
+      const std::vector<unsigned int>         *owned_families = nullptr;
+      const std::vector<QuadratureTable<dim>> *family_tables  = nullptr;
+      const std::vector<CellIterator>         *owned_fe_cells = nullptr;
+      const IndexSet                          *owned_dofs     = nullptr;
+
+      /** The displacement, all DoFs on every rank. */
+      const Vector<double> *u_full = nullptr;
+      /** f_int - f_ext of the last assembly (owned DoFs). */
+      const LinearAlgebra::Vector     *force       = nullptr;
+      const AffineConstraints<double> *constraints = nullptr;
+      /** Unit-stress residual d^k of every particle (section 8.2). */
+      const std::vector<Tensor<1, dim>> *unit_stress = nullptr;
+
+      /** The cell and reference coordinates of every 'Output/Points'. */
+      const std::vector<std::pair<CellIterator, Point<dim>>> *point_locations =
+        nullptr;
+      const std::vector<LineSampleLocation<dim>> *line_locations = nullptr;
+      /** GridTools::diameter() of the mesh, set in setup. */
+      const double *mesh_diameter = nullptr;
+
+      /** Wall times (s) of the phases and the timers, for summary.timing. */
+      const double *time_mesh = nullptr, *time_setup = nullptr,
+                   *time_shape = nullptr, *time_vc = nullptr,
+                   *time_assembly = nullptr, *time_solve = nullptr;
+      const Timer *total_timer = nullptr, *postprocess_timer = nullptr;
+
+      /** Set the time of every parsed function to the load factor. */
+      std::function<void(double)> set_load_factor;
+      /**
+       * Add the dynamics columns (energies, disorder) of time @p t to the
+       * statistics table and summary.dynamics; called by the statistics
+       * postprocessor of a dynamic run between 'residual' and the points.
+       */
+      std::function<void(double)> add_dynamic_statistics;
+
+      /**
+       * The deformation gradient F^k = sum_b (x_b - x_k) (x) B_b of the
+       * particle @p k, with the master gradients B of family k.
+       */
+      Tensor<2, dim>
+      particle_deformation_gradient(const unsigned int k) const;
+
+      /** The Q1 interpolant of u_full at @p reference in @p cell. */
+      std::vector<double>
+      displacement_at(const CellIterator &cell,
+                      const Point<dim>   &reference) const;
+
+      /** grad u of the exact solution at @p p (the function above). */
+      Tensor<2, dim>
+      exact_displacement_gradient(const Point<dim> &p) const;
+    };
+  } // namespace Postprocess
+} // namespace pg
+
+#endif

@@ -1,0 +1,177 @@
+#include <pg/postprocess/postprocessors.h>
+#include <pg/problem.h>
+
+#include <deal.II/base/patterns.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+
+namespace pg
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    void
+    NodalStresses<dim>::execute(const ProblemView<dim> &,
+                                const Step &,
+                                TableHandler &,
+                                RunSummary &)
+    {}
+
+
+
+    template <int dim>
+    void
+    NodalStresses<dim>::finalize(const ProblemView<dim> &view,
+                                 const Step &,
+                                 TableHandler &,
+                                 RunSummary &summary)
+    {
+      std::vector<Tensor<2, dim>> F(view.particles->n_particles());
+      for (unsigned int k = 0; k < F.size(); ++k)
+        F[k] = view.particle_deformation_gradient(k);
+      write(view, F, summary);
+    }
+
+
+
+    template <int dim>
+    void
+    NodalStresses<dim>::write(const ProblemView<dim>            &view,
+                              const std::vector<Tensor<2, dim>> &particle_F,
+                              RunSummary                        &summary)
+    {
+      const auto &prm           = *view.parameters;
+      const auto &triangulation = *view.triangulation;
+      const auto &particles     = *view.particles;
+      const auto &material      = *view.material;
+      const auto &meshfree      = *view.meshfree;
+
+      const unsigned int        n_vertices = triangulation.n_vertices();
+      std::vector<Tensor<2, 3>> fe_stress(n_vertices);
+      std::vector<unsigned int> fe_cells(n_vertices, 0);
+      // QTrapezoid's points are the vertices in deal.II's numbering.
+      FEValues<dim> fe_values(*view.fe, QTrapezoid<dim>(), update_gradients);
+      std::vector<Tensor<2, dim>> gradients(fe_values.n_quadrature_points);
+      for (const auto &cell : view.dof_handler->active_cell_iterators())
+        if (!meshfree[cell->active_cell_index()])
+          {
+            fe_values.reinit(cell);
+            fe_values[FEValuesExtractors::Vector(0)]
+              .get_function_gradients(*view.u_full, gradients);
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                fe_stress[cell->vertex_index(v)] += material.cauchy_stress(
+                  unit_symmetric_tensor<dim>() + gradients[v]);
+                ++fe_cells[cell->vertex_index(v)];
+              }
+          }
+      std::vector<int> particle_at(n_vertices, -1);
+      for (unsigned int k = 0; k < particles.n_particles(); ++k)
+        particle_at[particles.vertex(k)] = k;
+
+      summary.max_interface_stress_jump = 0;
+      for (unsigned int k = 0; k < particles.n_particles(); ++k)
+        if (fe_cells[particles.vertex(k)] > 0)
+          summary.max_interface_stress_jump =
+            std::max(summary.max_interface_stress_jump,
+                     std::abs(material.cauchy_stress(particle_F[k])[0][0] -
+                              fe_stress[particles.vertex(k)][0][0] /
+                                fe_cells[particles.vertex(k)]));
+
+      const auto nodal_stress = [&](const unsigned int vertex) {
+        return particle_at[vertex] >= 0 ?
+                 material.cauchy_stress(particle_F[particle_at[vertex]]) :
+                 Tensor<2, 3>(fe_stress[vertex] / fe_cells[vertex]);
+      };
+      const auto exact_stress = [&](const Point<dim> &p) {
+        return material.cauchy_stress(unit_symmetric_tensor<dim>() +
+                                      view.exact_displacement_gradient(p));
+      };
+      const auto in_plane = [](const Tensor<2, 3> &sigma) {
+        std::vector<double> values;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            values.push_back(sigma[i][j]);
+        return values;
+      };
+
+      // the stress at the vertex nearest each named point
+      summary.point_stresses.clear();
+      summary.point_exact_stresses.clear();
+      const auto &vertices = triangulation.get_vertices();
+      const auto &used     = triangulation.get_used_vertices();
+      for (const auto &[name, coordinates] : prm.output.points)
+        {
+          Point<dim> p;
+          for (unsigned int c = 0; c < dim; ++c)
+            p[c] = coordinates[c];
+          unsigned int nearest = numbers::invalid_unsigned_int;
+          for (unsigned int v = 0; v < vertices.size(); ++v)
+            if (used[v] && (particle_at[v] >= 0 || fe_cells[v] > 0) &&
+                (nearest == numbers::invalid_unsigned_int ||
+                 p.distance_square(vertices[v]) <
+                   p.distance_square(vertices[nearest])))
+              nearest = v;
+          if (nearest == numbers::invalid_unsigned_int)
+            continue;
+          summary.point_stresses.emplace_back(name,
+                                              in_plane(nodal_stress(nearest)));
+          if (prm.compute_errors)
+            summary.point_exact_stresses.emplace_back(name,
+                                                      in_plane(exact_stress(
+                                                        vertices[nearest])));
+        }
+
+      const auto &ids = prm.output.stress_boundaries;
+      if (!view.root || ids.empty())
+        return;
+      std::ofstream table(prm.output.directory +
+                          "/stress_along_boundaries.txt");
+      table << "# Cauchy stress at the vertices of the boundaries "
+            << Patterns::Tools::Convert<std::vector<int>>::to_string(
+                 std::vector<int>(ids.begin(), ids.end()))
+            << " (particles: the particle value; FE vertices: the average of "
+               "the adjacent cells)\n# boundary_id x y"
+            << (dim == 3 ? " z" : "") << " sigma_xx sigma_yy sigma_xy"
+            << (prm.compute_errors ? " exact_xx exact_yy exact_xy" : "")
+            << " side\n"
+            << std::setprecision(8);
+      std::vector<bool> written(n_vertices, false);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              std::find(ids.begin(), ids.end(), cell->face(f)->boundary_id()) !=
+                ids.end())
+            for (const unsigned int v : cell->face(f)->vertex_indices())
+              {
+                const unsigned int vertex = cell->face(f)->vertex_index(v);
+                if (written[vertex])
+                  continue;
+                written[vertex]          = true;
+                const bool         pg    = particle_at[vertex] >= 0;
+                const Tensor<2, 3> sigma = nodal_stress(vertex);
+                table << static_cast<int>(cell->face(f)->boundary_id()) << " "
+                      << cell->face(f)->vertex(v) << " " << sigma[0][0] << " "
+                      << sigma[1][1] << " " << sigma[0][1];
+                if (prm.compute_errors)
+                  {
+                    const Tensor<2, 3> exact =
+                      exact_stress(cell->face(f)->vertex(v));
+                    table << " " << exact[0][0] << " " << exact[1][1] << " "
+                          << exact[0][1];
+                  }
+                table << (pg ? " PG\n" : " FE\n");
+              }
+    }
+
+
+
+    template class NodalStresses<2>;
+    template class NodalStresses<3>;
+  } // namespace Postprocess
+} // namespace pg

@@ -1,0 +1,95 @@
+#include <pg/postprocess/postprocessors.h>
+#include <pg/problem.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace pg
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    void
+    ParticleFields<dim>::execute(const ProblemView<dim> &,
+                                 const Step &,
+                                 TableHandler &,
+                                 RunSummary &)
+    {}
+
+
+
+    template <int dim>
+    void
+    ParticleFields<dim>::finalize(const ProblemView<dim> &view,
+                                  const Step &,
+                                  TableHandler &,
+                                  RunSummary &summary)
+    {
+      const auto &particles = *view.particles;
+      if (particles.n_particles() == 0)
+        return;
+      // The oscillation indicator and a plain table of the particle fields
+      // (for plots) at the final state; every rank knows all particles.
+      std::vector<Tensor<2, dim>> F(particles.n_particles());
+      for (unsigned int k = 0; k < F.size(); ++k)
+        F[k] = view.particle_deformation_gradient(k);
+      double oscillation = 0, deformation = 0;
+      for (unsigned int k = 0; k < F.size(); ++k)
+        {
+          Tensor<2, dim> mean;
+          double         volume = 0;
+          for (const unsigned int j : view.families->members(k))
+            {
+              mean += particles.volume(j) * F[j];
+              volume += particles.volume(j);
+            }
+          mean /= volume;
+          oscillation += particles.volume(k) * (F[k] - mean).norm_square();
+          deformation +=
+            particles.volume(k) *
+            (F[k] - Tensor<2, dim>(unit_symmetric_tensor<dim>())).norm_square();
+        }
+      summary.gradient_oscillation =
+        deformation > 0 ? std::sqrt(oscillation / deformation) : 0.;
+      write_table(view, F);
+
+      std::ostringstream line;
+      line << std::setprecision(3) << summary.gradient_oscillation;
+      *view.pcout << "  gradient oscillation of the particles: " << line.str()
+                  << std::endl;
+    }
+
+
+
+    template <int dim>
+    void
+    ParticleFields<dim>::write_table(const ProblemView<dim>            &view,
+                                     const std::vector<Tensor<2, dim>> &F)
+    {
+      if (!view.root)
+        return;
+      const auto   &particles = *view.particles;
+      std::ofstream table(view.parameters->output.directory + "/particles.txt");
+      table << "# x y" << (dim == 3 ? " z" : "") << " u_x u_y"
+            << (dim == 3 ? " u_z" : "") << " F_ij (row-major) volume\n"
+            << std::setprecision(10);
+      for (unsigned int k = 0; k < F.size(); ++k)
+        {
+          table << particles.position(k);
+          for (unsigned int c = 0; c < dim; ++c)
+            table << " " << (*view.u_full)[particles.dof(k, c)];
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              table << " " << F[k][i][j];
+          table << " " << particles.volume(k) << "\n";
+        }
+    }
+
+
+
+    template class ParticleFields<2>;
+    template class ParticleFields<3>;
+  } // namespace Postprocess
+} // namespace pg

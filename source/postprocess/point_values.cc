@@ -1,0 +1,48 @@
+#include <pg/postprocess/postprocessors.h>
+#include <pg/problem.h>
+
+namespace pg
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    void
+    PointValues<dim>::execute(const ProblemView<dim> &view,
+                              const Step &,
+                              TableHandler &,
+                              RunSummary &summary)
+    {
+      // Point values from the Q1 interpolant (the nodal values at vertices).
+      const auto &locations = *view.point_locations;
+      summary.points.clear();
+      for (unsigned int i = 0; i < locations.size(); ++i)
+        summary.points.emplace_back(view.parameters->output.points[i].first,
+                                    view.displacement_at(locations[i].first,
+                                                         locations[i].second));
+    }
+
+
+
+    template <int dim>
+    void
+    PointValues<dim>::finalize(const ProblemView<dim> &view,
+                               const Step &,
+                               TableHandler &,
+                               RunSummary &summary)
+    {
+      const ConditionalOStream &pcout = *view.pcout;
+      for (const auto &[name, value] : summary.points)
+        {
+          pcout << "  point " << name << ": u =";
+          for (const double v : value)
+            pcout << " " << v;
+          pcout << std::endl;
+        }
+    }
+
+
+
+    template class PointValues<2>;
+    template class PointValues<3>;
+  } // namespace Postprocess
+} // namespace pg

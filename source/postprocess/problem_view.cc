@@ -1,0 +1,102 @@
+#include <pg/postprocess/problem_view.h>
+
+namespace pg
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    Tensor<2, dim>
+    ProblemView<dim>::particle_deformation_gradient(const unsigned int k) const
+    {
+      const auto     members = families->members(k);
+      const auto    &B       = family_elements->master_gradients(k);
+      Tensor<2, dim> F;
+      for (unsigned int b = 0; b < members.size(); ++b)
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            const double y = particles->position(members[b])[i] -
+                             particles->position(k)[i] +
+                             (*u_full)[particles->dof(members[b], i)];
+            for (unsigned int j = 0; j < dim; ++j)
+              F[i][j] += y * B[b][j];
+          }
+      return F;
+    }
+
+
+
+    template <int dim>
+    std::vector<double>
+    ProblemView<dim>::displacement_at(const CellIterator &cell,
+                                      const Point<dim>   &reference) const
+    {
+      std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
+      cell->get_dof_indices(dofs);
+      std::vector<double> value(dim, 0.);
+      for (unsigned int j = 0; j < dofs.size(); ++j)
+        value[fe->system_to_component_index(j).first] +=
+          fe->shape_value(j, reference) * (*u_full)[dofs[j]];
+      return value;
+    }
+
+
+
+    template <int dim>
+    Tensor<2, dim>
+    ProblemView<dim>::exact_displacement_gradient(const Point<dim> &p) const
+    {
+      return Postprocess::exact_displacement_gradient(*parameters,
+                                                      *mesh_diameter,
+                                                      p);
+    }
+
+
+
+    template <int dim>
+    Tensor<2, dim>
+    exact_displacement_gradient(const Parameters::AllParameters<dim> &prm,
+                                const double      mesh_diameter,
+                                const Point<dim> &p)
+    {
+      Tensor<2, dim> G;
+      if (prm.exact_gradient)
+        {
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              G[i][j] = prm.exact_gradient->value(p, i * dim + j);
+          return G;
+        }
+      // Without 'Gradient expression': the fourth-order central difference
+      //   (-u(p + 2h) + 8 u(p + h) - 8 u(p - h) + u(p - 2h)) / (12 h)
+      // with h = 1e-4 of the mesh diameter. Polynomials to degree 4 are
+      // differentiated to round-off (about 1e-13 relative), smooth fields to
+      // about 1e-12 (sin(pi x / 2) on [-1, 1]^2: 2e-13; Kirsch's field at the
+      // hole: 1e-11). The deal.II default (central, h = 1e-8) stops at 1e-9.
+      const double h = 1e-4 * mesh_diameter;
+      for (unsigned int j = 0; j < dim; ++j)
+        {
+          const Tensor<1, dim> e = h * Point<dim>::unit_vector(j);
+          for (unsigned int i = 0; i < dim; ++i)
+            G[i][j] = (-prm.exact_solution.value(p + 2 * e, i) +
+                       8 * prm.exact_solution.value(p + e, i) -
+                       8 * prm.exact_solution.value(p - e, i) +
+                       prm.exact_solution.value(p - 2 * e, i)) /
+                      (12 * h);
+        }
+      return G;
+    }
+
+
+
+    template Tensor<2, 2>
+    exact_displacement_gradient(const Parameters::AllParameters<2> &,
+                                const double,
+                                const Point<2> &);
+    template Tensor<2, 3>
+    exact_displacement_gradient(const Parameters::AllParameters<3> &,
+                                const double,
+                                const Point<3> &);
+    template struct ProblemView<2>;
+    template struct ProblemView<3>;
+  } // namespace Postprocess
+} // namespace pg

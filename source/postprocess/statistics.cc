@@ -1,0 +1,56 @@
+#include <pg/postprocess/postprocessors.h>
+#include <pg/problem.h>
+
+namespace pg
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    void
+    Statistics<dim>::execute(const ProblemView<dim> &view,
+                             const Step             &step,
+                             TableHandler           &statistics,
+                             RunSummary             &summary)
+    {
+      const bool dynamic = view.parameters->time.dynamic();
+      statistics.add_value("step", step.number);
+      statistics.add_value(dynamic ? "time" : "load factor", step.time);
+      statistics.add_value("Newton iterations", step.newton_iterations);
+      statistics.add_value("residual",
+                           summary.newton_residuals_last_step.empty() ?
+                             0. :
+                             summary.newton_residuals_last_step.back());
+      if (dynamic)
+        view.add_dynamic_statistics(step.time);
+      for (const auto &[name, value] : summary.points)
+        for (unsigned int c = 0; c < dim; ++c)
+          statistics.add_value(name + "_u" + std::string(1, "xyz"[c]),
+                               value[c]);
+      if (summary.have_errors)
+        {
+          statistics.add_value("L2 error", summary.L2);
+          statistics.add_value("H1 error", summary.H1);
+        }
+      statistics.add_value("wall time", view.total_timer->wall_time());
+      statistics.set_scientific("residual", true);
+    }
+
+
+
+    template <int dim>
+    void
+    Statistics<dim>::finalize(const ProblemView<dim> &view,
+                              const Step &,
+                              TableHandler &,
+                              RunSummary &summary)
+    {
+      *view.pcout << "  total Newton iterations: " << summary.newton_iterations
+                  << std::endl;
+    }
+
+
+
+    template class Statistics<2>;
+    template class Statistics<3>;
+  } // namespace Postprocess
+} // namespace pg

@@ -1,0 +1,152 @@
+#include <pg/postprocess/output.h>
+#include <pg/postprocess/postprocessors.h>
+#include <pg/problem.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <fstream>
+#include <iomanip>
+
+namespace pg
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    void
+    VtuOutput<dim>::execute(const ProblemView<dim> &view,
+                            const Step             &step,
+                            TableHandler           &statistics,
+                            RunSummary             &summary)
+    {
+      write(view, step.number, step.time, statistics, summary);
+    }
+
+
+
+    template <int dim>
+    void
+    VtuOutput<dim>::finalize(const ProblemView<dim> &view,
+                             const Step             &step,
+                             TableHandler           &statistics,
+                             RunSummary             &summary)
+    {
+      write(view, step.number, step.time, statistics, summary);
+    }
+
+
+
+    template <int dim>
+    void
+    VtuOutput<dim>::write(const ProblemView<dim> &view,
+                          const unsigned int      step,
+                          const double            t,
+                          const TableHandler     &statistics,
+                          RunSummary             &summary)
+    {
+      const auto       &prm = *view.parameters;
+      const std::string dir = prm.output.directory + "/";
+      summary.timing        = {{"mesh", *view.time_mesh},
+                               {"setup", *view.time_setup},
+                               {"shape_functions", *view.time_shape},
+                               {"vc", *view.time_vc},
+                               {"assembly", *view.time_assembly},
+                               {"solve", *view.time_solve},
+                               {"postprocess", view.postprocess_timer->wall_time()},
+                               {"total", view.total_timer->wall_time()}};
+      if (view.root)
+        {
+          std::ofstream stat(dir + "statistics.txt");
+          statistics.write_text(
+            stat,
+            TableHandler::table_with_separate_column_description);
+          write_summary_json(summary, dir + "summary.json");
+          std::ofstream timing(dir + "timing.txt");
+          for (const auto &[name, seconds] : summary.timing)
+            timing << std::left << std::setw(16) << name << seconds << " s\n";
+        }
+      if (!prm.output.vtu)
+        return;
+
+      const auto    &particles = *view.particles;
+      const auto    &u_full    = *view.u_full;
+      const auto    &material  = *view.material;
+      const MPI_Comm comm      = view.mpi_communicator;
+      DataOut<dim>   data_out;
+      data_out.attach_dof_handler(*view.dof_handler);
+      const std::vector<std::string> names(dim, "displacement");
+      data_out.add_data_vector(
+        u_full,
+        names,
+        DataOut<dim>::type_dof_data,
+        std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+          dim,
+          DataComponentInterpretation::component_is_part_of_vector));
+      // meshfree cells show the particles' F (section "What a run writes")
+      std::vector<Tensor<2, dim>> particle_F(particles.n_particles());
+      std::vector<int> particle_at(view.triangulation->n_vertices(), -1);
+      for (unsigned int k = 0; k < particles.n_particles(); ++k)
+        {
+          particle_F[k] = view.particle_deformation_gradient(k);
+          particle_at[particles.vertex(k)] = k;
+        }
+      const StressPostprocessor<dim> stress(
+        material,
+        *view.meshfree,
+        [&](const unsigned int v) -> const Tensor<2, dim> * {
+          return particle_at[v] >= 0 ? &particle_F[particle_at[v]] : nullptr;
+        });
+      data_out.add_data_vector(u_full, stress);
+      const auto   &meshfree = *view.meshfree;
+      Vector<float> meshfree_cell(view.triangulation->n_active_cells());
+      for (unsigned int c = 0; c < meshfree.size(); ++c)
+        meshfree_cell[c] = meshfree[c];
+      data_out.add_data_vector(meshfree_cell, "meshfree");
+      data_out.build_patches();
+      const std::string cells =
+        data_out.write_vtu_with_pvtu_record(dir, "solution", step, comm, 4);
+      pvd_cells.emplace_back(t, cells);
+
+      std::vector<std::string> particle_names(dim, "displacement");
+      for (const std::string &n : stress_field_names<dim>())
+        particle_names.push_back(n);
+      particle_names.push_back("volume");
+      for (unsigned int c = 0; c < dim; ++c)
+        particle_names.push_back("unit_stress_residual");
+      ParticleOutput<dim> particle_out(particle_names);
+      std::vector<double> data, stress_values;
+      for (const unsigned int k : *view.owned_families)
+        {
+          data.clear();
+          for (unsigned int c = 0; c < dim; ++c)
+            data.push_back(u_full[particles.dof(k, c)]);
+          stress_field_values(material,
+                              view.particle_deformation_gradient(k),
+                              stress_values);
+          data.insert(data.end(), stress_values.begin(), stress_values.end());
+          data.push_back(particles.volume(k));
+          for (unsigned int c = 0; c < dim; ++c)
+            data.push_back((*view.unit_stress)[k][c]);
+          particle_out.add_particle(particles.position(k), data);
+        }
+      const std::string particles_file =
+        particle_out.write_vtu_with_pvtu_record(dir,
+                                                "particles",
+                                                step,
+                                                comm,
+                                                4);
+      pvd_particles.emplace_back(t, particles_file);
+      if (view.root)
+        {
+          std::ofstream pvd(dir + "solution.pvd");
+          DataOutBase::write_pvd_record(pvd, pvd_cells);
+          std::ofstream ppvd(dir + "particles.pvd");
+          DataOutBase::write_pvd_record(ppvd, pvd_particles);
+        }
+    }
+
+
+
+    template class VtuOutput<2>;
+    template class VtuOutput<3>;
+  } // namespace Postprocess
+} // namespace pg
