@@ -63,11 +63,13 @@ namespace pg
       Ma(system.locally_owned_dofs(), comm);
     double                   static_norm = 0;
     NewtonSolver::Operations operations  = system.newton_operations();
-    operations.assemble                  = [&]() -> std::string {
-      const std::string failure = system.assemble_residual(true);
-      if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) > 0)
-        return failure.empty() ? "the assembly failed on another rank" :
-                                                  failure;
+    // the static assembly (its failures already reduced over the ranks),
+    // then the inertia
+    const auto assemble_static = operations.assemble;
+    operations.assemble        = [&]() -> std::string {
+      const std::string failure = assemble_static();
+      if (!failure.empty())
+        return failure;
       a_new = u;
       a_new -= u_tilde;
       a_new *= c0;
