@@ -1,5 +1,8 @@
-#include <pg/analysis/eigenmodes.h>
-#include <pg/analysis/inf_sup.h>
+#include <pg/analysis/analysis.h>
+#include <pg/analysis/dynamic_analysis.h>
+#include <pg/analysis/eigenmode_analysis.h>
+#include <pg/analysis/inf_sup_analysis.h>
+#include <pg/analysis/static_analysis.h>
 #include <pg/assembly/assembler.h>
 #include <pg/assembly/loads.h>
 #include <pg/assembly/mass_matrix.h>
@@ -244,28 +247,11 @@ namespace pg
     write_files(const unsigned int step, const double t);
 
     /**
-     * 'Analysis/Type = eigenmodes': the eigenvalues of the tangent in the
-     * undeformed state (dissertation section 7.2.1).
+     * What the analyses see of the problem (the view is set once view()
+     * has been called, after setup()).
      */
-    void
-    compute_eigenmodes();
-
-    /**
-     * 'Analysis/Type = inf-sup': the numerical inf-sup test (section
-     * 7.2.5) on the refinement series 'Inf-sup subdivisions' of the unit
-     * square, one Implementation per mesh.
-     */
-    void
-    compute_inf_sup();
-
-    /**
-     * T_h (pressure projection, eq. 7.13) and S_h (H1 form, eq. 7.12) of
-     * the set-up mesh with the element kernels of the real problem, the
-     * constrained rows condensed by zero_constraints.
-     */
-    void
-    assemble_inf_sup_forms(LinearAlgebra::SparseMatrix &T,
-                           LinearAlgebra::SparseMatrix &S);
+    Analysis::Access<dim>
+    analysis_access();
 
     /** F^k of particle @p k (ProblemView::particle_deformation_gradient). */
     Tensor<2, dim>
@@ -305,14 +291,6 @@ namespace pg
     add_particle_loads(Assembler<dim> &assembler) const;
 
     /**
-     * 'Time/Integrator' leapfrog or newmark: initial conditions, masses,
-     * the stable step estimate and the time loop (instead of the load
-     * steps of run()).
-     */
-    void
-    run_dynamics();
-
-    /**
      * f_ext at the time of the parsed functions: the loads are dead, so
      * f_ext = -(f_int - f_ext)(u = 0), one residual assembly (none without
      * body force and Neumann boundaries). Overwrites rhs and force.
@@ -326,26 +304,6 @@ namespace pg
                   const double                 factor,
                   LinearAlgebra::Vector       &target) const override;
 
-    /**
-     * particles.txt: position, displacement, deformation gradient @p F
-     * and volume of every particle (for plots).
-     */
-    void
-    write_particle_table(const std::vector<Tensor<2, dim>> &F);
-
-    /** The disorder indicator of the particles at the current state. */
-    double
-    particle_disorder() const;
-
-    /** The energy columns of statistics.txt and summary.dynamics. */
-    void
-    add_energy_statistics(const double t);
-
-    /** The masses of the time integrators (run_dynamics). */
-    MassMatrices              masses;
-    TimeIntegration::Energies energies;
-    /** RMS of the initial particle displacement about its mean. */
-    double disorder_reference = 0;
     /**
      * GridTools::diameter() of the final mesh (O(boundary vertices^2), so
      * computed once in setup()): the scale of the geometric tolerances of
@@ -460,6 +418,8 @@ namespace pg
     std::optional<Postprocess::ProblemView<dim>> problem_view;
     /** Points, lines, reactions, errors, statistics, files, in order. */
     Postprocess::Manager<dim> postprocessors;
+    /** The analysis of 'Analysis/Type' and 'Time/Integrator' (run()). */
+    std::unique_ptr<Analysis::Interface<dim>> analysis;
   };
 
 
@@ -1167,9 +1127,7 @@ namespace pg
     v.total_timer            = &total_timer;
     v.postprocess_timer      = &postprocess_timer;
     v.set_load_factor        = [this](const double t) { set_load_factor(t); };
-    v.add_dynamic_statistics = [this](const double t) {
-      add_energy_statistics(t);
-    };
+    v.add_dynamic_statistics = {}; // set by run() for a DynamicAnalysis
     return *problem_view;
   }
 
@@ -1270,240 +1228,32 @@ namespace pg
 
 
   template <int dim>
-  void
-  Problem<dim>::Implementation::compute_eigenmodes()
+  Analysis::Access<dim>
+  Problem<dim>::Implementation::analysis_access()
   {
-    assemble(true);
-    AssertThrow(failure.empty(), ExcMessage(failure));
-    const std::vector<double> values = Analysis::dense_eigenvalues(matrix);
-    summary.max_eigenvalue           = values.back();
-    summary.n_zero_eigenvalues       = 0;
-    for (const double v : values)
-      if (std::abs(v) < 1e-10 * summary.max_eigenvalue)
-        ++summary.n_zero_eigenvalues;
-    summary.eigenvalues.assign(
-      values.begin(),
-      values.begin() +
-        std::min<std::size_t>(values.size(), prm.analysis.n_eigenvalues));
-    summary.converged = true;
-
-    std::ostringstream line;
-    line << std::setprecision(4) << "  eigenvalues: max " << values.back()
-         << ", below 1e-10 max: " << summary.n_zero_eigenvalues
-         << "\n  smallest non-zero:";
-    for (unsigned int i = summary.n_zero_eigenvalues;
-         i <
-         std::min<std::size_t>(values.size(), summary.n_zero_eigenvalues + 6);
-         ++i)
-      line << " " << values[i];
-    pcout << line.str() << std::endl;
-
-    write_files(0, 0.);
-    if (root)
-      {
-        std::ofstream table(prm.output.directory + "/eigenvalues.txt");
-        table << "# index  eigenvalue (real part, ascending)\n"
-              << std::setprecision(12);
-        for (unsigned int i = 0; i < summary.eigenvalues.size(); ++i)
-          table << i + 1 << " " << summary.eigenvalues[i] << "\n";
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::assemble_inf_sup_forms(
-    LinearAlgebra::SparseMatrix &T,
-    LinearAlgebra::SparseMatrix &S)
-  {
-    const Analysis::InfSup::PressureProjectionMaterial<dim> t_material;
-    const Analysis::InfSup::H1Material<dim>                 s_material;
-    const bool p0 = (prm.analysis.pressure_space == "P0");
-    T.copy_from(matrix);
-    T = 0;
-    S.copy_from(matrix);
-    S = 0;
-    FullMatrix<double> t_local, s_local;
-    Vector<double>     residual;
-    // The undeformed state: y^b = X^b - X^0 (u = 0; both forms are linear).
-    const auto add = [&](const QuadratureTable<dim>                 &table,
-                         const std::vector<Tensor<1, dim>>          &y,
-                         const std::vector<types::global_dof_index> &dofs) {
-      if (p0)
-        Analysis::InfSup::p0_pressure_projection(table, t_local);
-      else
-        assemble_element(table, y, t_material, residual, &t_local);
-      assemble_element(table, y, s_material, residual, &s_local);
-      zero_constraints.distribute_local_to_global(t_local, dofs, T);
-      zero_constraints.distribute_local_to_global(s_local, dofs, S);
-    };
-    FEValues<dim>                        fe_values(fe_scalar,
-                            QGauss<dim>(2),
-                            update_gradients | update_JxW_values);
-    QuadratureTable<dim>                 table;
-    std::vector<Tensor<1, dim>>          y;
-    std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : owned_fe_cells)
-      {
-        fe_values.reinit(
-          typename Triangulation<dim>::active_cell_iterator(cell));
-        fill_q1_table(fe_values, table);
-        dofs.resize(fe.n_dofs_per_cell());
-        cell->get_dof_indices(dofs);
-        y.resize(cell->n_vertices());
-        for (unsigned int b = 0; b < y.size(); ++b)
-          y[b] = cell->vertex(b) - cell->vertex(0);
-        add(table, y, dofs);
-      }
-    for (unsigned int f = 0; f < owned_families.size(); ++f)
-      {
-        const unsigned int k       = owned_families[f];
-        const auto         members = families.members(k);
-        dofs.resize(members.size() * dim);
-        y.resize(members.size());
-        for (unsigned int b = 0; b < members.size(); ++b)
-          {
-            y[b] = particles.position(members[b]) - particles.position(k);
-            for (unsigned int c = 0; c < dim; ++c)
-              dofs[b * dim + c] = particles.dof(members[b], c);
-          }
-        add(family_tables[f], y, dofs);
-      }
-    T.compress(VectorOperation::add);
-    S.compress(VectorOperation::add);
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::compute_inf_sup()
-  {
-    using Method = FormulationCode::Method;
-    AssertThrow(formulation.method == Method::fem ||
-                  formulation.method == Method::pbg,
-                ExcBadParameter(
-                  "Discretization/Formulation",
-                  formulation.text,
-                  "the inf-sup test ('Analysis/Type = inf-sup') solves a "
-                  "symmetric generalised eigenproblem, and PPG tangents are "
-                  "not symmetric: use a PBG formulation (or FEM)."));
-    const std::vector<unsigned int> &series = prm.analysis.inf_sup_subdivisions;
-    const double       tolerance = prm.analysis.inf_sup_zero_tolerance;
-    const unsigned int max_size  = 6000;
-    // Refuse too big problems before computing anything: a clamped square
-    // has dim (N - 1)^dim free unknowns, fewer constraints give more.
-    for (const unsigned int N : series)
-      AssertThrow(dim * std::pow(N - 1., dim) <= max_size,
-                  ExcBadParameter("Analysis/Inf-sup subdivisions",
-                                  std::to_string(N),
-                                  "the dense generalised eigensolver handles "
-                                  "at most " +
-                                    std::to_string(max_size) +
-                                    " free unknowns, and this mesh has at "
-                                    "least " +
-                                    std::to_string(static_cast<unsigned int>(
-                                      dim * std::pow(N - 1., dim))) +
-                                    ": use fewer subdivisions."));
-
-    RunSummary::InfSup result;
-    result.pressure_space = prm.analysis.pressure_space;
-    result.zero_tolerance = tolerance;
-    const double nan      = std::numeric_limits<double>::quiet_NaN();
-    const bool   p0       = (prm.analysis.pressure_space == "P0");
-    RunSummary   last;
-    for (unsigned int i = 0; i < series.size(); ++i)
-      {
-        const unsigned int N = series[i];
-        // The first mesh echoes its set-up, the others stay quiet.
-        std::ostringstream quiet;
-        Implementation level(prm, comm, i == 0 ? pcout.get_stream() : quiet);
-        level.geometry.mesh              = "hyper rectangle";
-        level.geometry.lower_corner      = std::vector<double>(dim, 0.);
-        level.geometry.upper_corner      = std::vector<double>(dim, 1.);
-        level.geometry.subdivisions      = {N};
-        level.geometry.global_refinement = 0;
-        level.setup();
-        LinearAlgebra::SparseMatrix T, S;
-        level.assemble_inf_sup_forms(T, S);
-        const Analysis::InfSup::Value value =
-          Analysis::InfSup::compute_value(T,
-                                          S,
-                                          level.zero_constraints,
-                                          tolerance,
-                                          max_size);
-        // n_p: one pressure per element (Q1 cell or family) for P0.
-        const double n_p =
-          p0 ? level.owned_fe_cells.size() + level.owned_families.size() : nan;
-        result.N.push_back(N);
-        result.n_dofs.push_back(level.summary.n_dofs);
-        result.n_free.push_back(value.n_free);
-        result.n_pressure.push_back(n_p);
-        result.n_zero.push_back(value.n_zero);
-        // (7.15) with k = n_zero + 1
-        result.k_pm.push_back(
-          p0 ? value.n_zero + 1. - (value.n_free - n_p + 1.) : nan);
-        result.beta.push_back(value.beta);
-        result.slope.push_back(
-          i == 0 ? nan :
-                   Analysis::InfSup::loglog_slope(series[i - 1],
-                                                  result.beta[i - 1],
-                                                  N,
-                                                  value.beta));
-        result.lambda_max.push_back(value.lambda_max);
-        result.largest_zero.push_back(value.largest_zero / value.lambda_max);
-
-        std::ostringstream line;
-        line << "  inf-sup N = " << N << ": " << value.n_free << " free DoFs";
-        if (p0)
-          line << ", " << n_p << " pressures";
-        line << ", zero eigenvalues " << value.n_zero << std::setprecision(3)
-             << ", beta = " << value.beta;
-        if (i > 0)
-          line << std::fixed << std::setprecision(2)
-               << ", slope = " << result.slope[i];
-        pcout << line.str() << std::endl;
-        last = level.summary;
-      }
-
-    // The table, also as inf_sup.txt.
-    std::ostringstream table;
-    table << "# inf-sup test (Chapelle & Bathe 1993; dissertation 7.2.5), '"
-          << formulation.text << "', pressure space " << result.pressure_space
-          << ", distortion " << geometry.distortion << "\n"
-          << "# zero eigenvalues: lambda < " << tolerance
-          << " lambda_max; beta = sqrt(first non-zero lambda) (7.14); "
-          << "slope = -dlog(beta)/dlog(N); k_pm (7.15) for P0 only\n"
-          << "# N n_dofs n_u n_p zero k_pm beta slope lambda_max "
-          << "largest_zero/lambda_max\n";
-    for (unsigned int i = 0; i < result.N.size(); ++i)
-      {
-        const auto number = [](const double x) {
-          std::ostringstream s;
-          if (std::isnan(x))
-            s << "-";
-          else
-            s << std::setprecision(6) << x;
-          return s.str();
-        };
-        table << result.N[i] << " " << result.n_dofs[i] << " "
-              << result.n_free[i] << " " << number(result.n_pressure[i]) << " "
-              << result.n_zero[i] << " " << number(result.k_pm[i]) << " "
-              << number(result.beta[i]) << " " << number(result.slope[i]) << " "
-              << number(result.lambda_max[i]) << " "
-              << number(result.largest_zero[i]) << "\n";
-      }
-    summary                 = last;
-    summary.inf_sup         = result;
-    summary.converged       = true;
-    summary.timing["total"] = total_timer.wall_time();
-    if (root)
-      {
-        std::ofstream file(prm.output.directory + "/inf_sup.txt");
-        file << table.str();
-        write_summary_json(summary, prm.output.directory + "/summary.json");
-      }
+    return {
+      prm,
+      formulation,
+      pcout,
+      root,
+      total_timer,
+      *this,
+      problem_view ? &*problem_view : nullptr,
+      summary,
+      statistics,
+      history,
+      [this](const unsigned int step,
+             const double       t,
+             const unsigned int iterations) {
+        postprocess_timer.start();
+        postprocess(step, t, iterations);
+        postprocess_timer.stop();
+      },
+      [this](const unsigned int step, const double t) { write_files(step, t); },
+      [this](const unsigned int step, const double t) {
+        postprocess_timer.start();
+        postprocessors.finalize(view(), {step, t, 0}, statistics, summary);
+      }};
   }
 
 
@@ -1525,69 +1275,46 @@ namespace pg
                                 "subsection 'Analysis'."));
     if (prm.analysis.type == "inf-sup")
       {
-        compute_inf_sup();
+        // One problem of these parameters per mesh of the series.
+        const auto set_up =
+          [this](
+            const Parameters::Geometry                               &mesh,
+            std::ostream                                             &out,
+            const std::function<void(const Analysis::Access<dim> &)> &work) {
+            Implementation level(prm, comm, out);
+            level.geometry = mesh;
+            level.setup();
+            level.view();
+            work(level.analysis_access());
+          };
+        analysis =
+          std::make_unique<Analysis::InfSupAnalysis<dim>>(analysis_access(),
+                                                          set_up);
+        analysis->run();
         return;
       }
     setup();
     update_full_solution();
+    view();
     if (prm.analysis.type == "eigenmodes")
+      analysis =
+        std::make_unique<Analysis::EigenmodeAnalysis<dim>>(analysis_access());
+    else if (prm.time.dynamic())
       {
-        compute_eigenmodes();
-        return;
+        auto dynamics =
+          std::make_unique<Analysis::DynamicAnalysis<dim>>(analysis_access());
+        problem_view->add_dynamic_statistics =
+          [d = dynamics.get()](const double t) { d->add_statistics(t); };
+        analysis = std::move(dynamics);
       }
-    if (prm.time.dynamic())
-      {
-        run_dynamics();
-        return;
-      }
-    summary.load_steps = 0;
-    postprocess_timer.start();
-    postprocess(0, 0., 0);
-    postprocess_timer.stop();
-
-    LoadStepper::Operations stepping;
-    stepping.solve = [this](const double t, unsigned int &iterations) {
-      return solve_step(t, iterations);
-    };
-    stepping.commit = [this]() {
-      converged_solution = solution_owned;
-      history.commit();
-    };
-    stepping.revert = [this]() {
-      solution_owned = converged_solution;
-      update_full_solution();
-      history.revert();
-    };
-    stepping.step_done = [this](const unsigned int step,
-                                const double       t,
-                                const unsigned int iterations) {
-      summary.newton_iterations += iterations;
-      summary.load_steps = step;
-      summary.converged  = true;
-      postprocess_timer.start();
-      postprocess(step, t, iterations);
-      postprocess_timer.stop();
-    };
-    stepping.give_up = [this](const unsigned int step, const double t) {
-      summary.converged = false;
-      write_files(step, t);
-    };
-    stepping.last_failure = [this]() { return last_failure; };
-    LoadStepper(prm.loading, prm.output.directory, pcout).run(stepping);
-    const unsigned int n_steps = prm.loading.load_steps;
-    postprocess_timer.start();
-    // the particle fields, nodal stresses, the final report and the files
-    postprocessors.finalize(view(), {n_steps, 1., 0}, statistics, summary);
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::write_particle_table(
-    const std::vector<Tensor<2, dim>> &F)
-  {
-    Postprocess::ParticleFields<dim>::write_table(view(), F);
+    else
+      analysis = std::make_unique<Analysis::StaticAnalysis<dim>>(
+        analysis_access(),
+        [this](const double t, unsigned int &iterations) {
+          return solve_step(t, iterations);
+        },
+        [this]() { return last_failure; });
+    analysis->run();
   }
 
 
@@ -1631,184 +1358,6 @@ namespace pg
           z(j) += c * ghosted(line.index);
     z.compress(VectorOperation::insert);
     target.add(factor, z);
-  }
-
-
-
-  template <int dim>
-  double
-  Problem<dim>::Implementation::particle_disorder() const
-  {
-    const unsigned int          n = particles.n_particles();
-    std::vector<Point<dim>>     X(n);
-    std::vector<Tensor<1, dim>> u(n);
-    std::vector<double>         V(n);
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        X[k] = particles.position(k);
-        V[k] = particles.volume(k);
-        for (unsigned int c = 0; c < dim; ++c)
-          u[k][c] = u_full[particles.dof(k, c)];
-      }
-    std::vector<std::vector<unsigned int>> neighbours(n);
-    for (unsigned int k = 0; k < n; ++k)
-      for (const unsigned int j : families.members(k))
-        if (j != k)
-          neighbours[k].push_back(j);
-    const double deviation =
-      TimeIntegration::local_fit_deviation(X, u, V, neighbours);
-    const double reference = disorder_reference > 0 ?
-                               disorder_reference :
-                               TimeIntegration::rms_about_mean(u, V);
-    return reference > 0 ? deviation / reference : 0.;
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::add_energy_statistics(const double t)
-  {
-    auto &d = summary.dynamics;
-    d.time.push_back(t);
-    d.kinetic.push_back(energies.kinetic);
-    d.internal_work.push_back(energies.internal_work);
-    d.external_work.push_back(energies.external_work);
-    d.support_work.push_back(energies.support_work);
-    d.balance.push_back(energies.balance());
-    statistics.add_value("kinetic energy", energies.kinetic);
-    statistics.add_value("internal work", energies.internal_work);
-    statistics.add_value("external work", energies.external_work);
-    statistics.add_value("support work", energies.support_work);
-    statistics.add_value("energy balance", energies.balance());
-    for (const std::string column : {"kinetic energy",
-                                     "internal work",
-                                     "external work",
-                                     "support work",
-                                     "energy balance"})
-      {
-        statistics.set_scientific(column, true);
-        statistics.set_precision(column, 8);
-      }
-    if (particles.n_particles() > 0)
-      {
-        d.disorder.push_back(particle_disorder());
-        statistics.add_value("disorder", d.disorder.back());
-        statistics.set_scientific("disorder", true);
-        statistics.set_precision("disorder", 6);
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::run_dynamics()
-  {
-    const auto &time      = prm.time;
-    const bool  explicit_ = (time.integrator == "leapfrog");
-    auto       &d         = summary.dynamics;
-    d.integrator          = time.integrator;
-
-    // Initial conditions at the vertices; the Dirichlet values of t = 0
-    // win, and the constrained DoFs start at rest.
-    set_load_factor(0.);
-    LinearAlgebra::Vector v(owned_dofs, comm);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      for (const unsigned int vertex : cell->vertex_indices())
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            const auto dof = cell->vertex_dof_index(vertex, c);
-            if (!owned_dofs.is_element(dof))
-              continue;
-            solution_owned(dof) =
-              prm.initial_displacement.value(cell->vertex(vertex), c);
-            v(dof) = prm.initial_velocity.value(cell->vertex(vertex), c);
-          }
-    solution_owned.compress(VectorOperation::insert);
-    v.compress(VectorOperation::insert);
-    make_constraints(constraints, false);
-    constraints.distribute(solution_owned);
-    zero_constraints.distribute(v);
-    update_full_solution();
-    if (particles.n_particles() > 0)
-      {
-        std::vector<Tensor<1, dim>> u0(particles.n_particles());
-        std::vector<double>         V(particles.n_particles());
-        for (unsigned int k = 0; k < u0.size(); ++k)
-          {
-            V[k] = particles.volume(k);
-            for (unsigned int c = 0; c < dim; ++c)
-              u0[k][c] = u_full[particles.dof(k, c)];
-          }
-        disorder_reference = TimeIntegration::rms_about_mean(u0, V);
-      }
-    assemble_masses(dof_handler,
-                    meshfree,
-                    zero_constraints,
-                    matrix,
-                    prm.material.density,
-                    !explicit_,
-                    masses);
-    std::unique_ptr<TimeIntegrator> integrator;
-    if (explicit_)
-      integrator = std::make_unique<Leapfrog>(masses);
-    else
-      integrator =
-        std::make_unique<Newmark>(masses, prm.time, prm.newton, pcout);
-
-    TimeStepper::Operations operations;
-    operations.started = [&](const TimeStepper::Result &r) {
-      d.stable_time_step = r.stable_time_step;
-      d.n_steps          = r.n_steps;
-      d.time_step        = r.time_step;
-      summary.load_steps = 0;
-      summary.converged  = true;
-    };
-    operations.step_done = [&](const unsigned int step,
-                               const unsigned int iterations) {
-      history.commit();
-      summary.newton_iterations += iterations;
-      summary.load_steps                 = step;
-      summary.newton_residuals_last_step = integrator->last_residuals;
-    };
-    operations.output = [&](const unsigned int step,
-                            const double       t,
-                            const unsigned int iterations) {
-      postprocess_timer.start();
-      postprocess(step, t, iterations);
-      postprocess_timer.stop();
-    };
-    operations.give_up = [&](const unsigned int last_step, const double t) {
-      history.revert();
-      summary.converged = false;
-      write_files(last_step, t);
-    };
-    const TimeStepper::Result result =
-      TimeStepper(time, prm.output.directory, pcout)
-        .run(*this,
-             *integrator,
-             masses,
-             v,
-             energies,
-             summary.dynamics.disorder,
-             operations);
-    const unsigned int n_steps = result.n_steps;
-    const double       t       = result.final_time;
-
-    std::vector<Tensor<2, dim>> F(particles.n_particles());
-    for (unsigned int k = 0; k < F.size(); ++k)
-      F[k] = particle_deformation_gradient(k);
-    if (particles.n_particles() > 0)
-      write_particle_table(F);
-    write_nodal_stresses(F);
-    if (summary.have_errors)
-      pcout << "  errors: L2 relative = " << summary.L2_relative
-            << ", H1 relative = " << summary.H1_relative << std::endl;
-    if (!explicit_)
-      pcout << "  total Newton iterations: " << summary.newton_iterations
-            << std::endl;
-    write_files(n_steps, t);
   }
 
 

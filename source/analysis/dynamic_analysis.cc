@@ -1,0 +1,198 @@
+#include <pg/analysis/dynamic_analysis.h>
+#include <pg/assembly/mass_matrix.h>
+#include <pg/postprocess/postprocessors.h>
+#include <pg/solvers/time_integrator.h>
+#include <pg/solvers/time_stepper.h>
+
+#include <memory>
+
+namespace pg
+{
+  namespace Analysis
+  {
+    template <int dim>
+    double
+    DynamicAnalysis<dim>::particle_disorder() const
+    {
+      const ParticleSet<dim>     &particles = *this->view().particles;
+      const FamilySet<dim>       &families  = *this->view().families;
+      const Vector<double>       &u_full    = *this->view().u_full;
+      const unsigned int          n         = particles.n_particles();
+      std::vector<Point<dim>>     X(n);
+      std::vector<Tensor<1, dim>> u(n);
+      std::vector<double>         V(n);
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          X[k] = particles.position(k);
+          V[k] = particles.volume(k);
+          for (unsigned int c = 0; c < dim; ++c)
+            u[k][c] = u_full[particles.dof(k, c)];
+        }
+      std::vector<std::vector<unsigned int>> neighbours(n);
+      for (unsigned int k = 0; k < n; ++k)
+        for (const unsigned int j : families.members(k))
+          if (j != k)
+            neighbours[k].push_back(j);
+      const double deviation =
+        TimeIntegration::local_fit_deviation(X, u, V, neighbours);
+      const double reference = disorder_reference > 0 ?
+                                 disorder_reference :
+                                 TimeIntegration::rms_about_mean(u, V);
+      return reference > 0 ? deviation / reference : 0.;
+    }
+
+
+
+    template <int dim>
+    void
+    DynamicAnalysis<dim>::add_statistics(const double t)
+    {
+      auto &d          = this->access.summary.dynamics;
+      auto &statistics = this->access.statistics;
+      d.time.push_back(t);
+      d.kinetic.push_back(energies.kinetic);
+      d.internal_work.push_back(energies.internal_work);
+      d.external_work.push_back(energies.external_work);
+      d.support_work.push_back(energies.support_work);
+      d.balance.push_back(energies.balance());
+      statistics.add_value("kinetic energy", energies.kinetic);
+      statistics.add_value("internal work", energies.internal_work);
+      statistics.add_value("external work", energies.external_work);
+      statistics.add_value("support work", energies.support_work);
+      statistics.add_value("energy balance", energies.balance());
+      for (const std::string column : {"kinetic energy",
+                                       "internal work",
+                                       "external work",
+                                       "support work",
+                                       "energy balance"})
+        {
+          statistics.set_scientific(column, true);
+          statistics.set_precision(column, 8);
+        }
+      if (this->view().particles->n_particles() > 0)
+        {
+          d.disorder.push_back(particle_disorder());
+          statistics.add_value("disorder", d.disorder.back());
+          statistics.set_scientific("disorder", true);
+          statistics.set_precision("disorder", 6);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    DynamicAnalysis<dim>::run()
+    {
+      const auto             &access    = this->access;
+      const auto             &prm       = access.parameters;
+      const auto             &view      = this->view();
+      const ParticleSet<dim> &particles = *view.particles;
+      MechanicalSystem       &system    = access.system;
+      RunSummary             &summary   = access.summary;
+      const auto             &time      = prm.time;
+      const bool              explicit_ = (time.integrator == "leapfrog");
+      auto                   &d         = summary.dynamics;
+      d.integrator                      = time.integrator;
+
+      // Initial conditions at the vertices; the Dirichlet values of t = 0
+      // win, and the constrained DoFs start at rest.
+      system.set_time(0.);
+      const IndexSet        &owned_dofs = system.locally_owned_dofs();
+      LinearAlgebra::Vector &u          = system.displacement();
+      LinearAlgebra::Vector  v(owned_dofs, system.communicator());
+      for (const auto &cell : view.dof_handler->active_cell_iterators())
+        for (const unsigned int vertex : cell->vertex_indices())
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              const auto dof = cell->vertex_dof_index(vertex, c);
+              if (!owned_dofs.is_element(dof))
+                continue;
+              u(dof) = prm.initial_displacement.value(cell->vertex(vertex), c);
+              v(dof) = prm.initial_velocity.value(cell->vertex(vertex), c);
+            }
+      u.compress(VectorOperation::insert);
+      v.compress(VectorOperation::insert);
+      system.apply_dirichlet_values();
+      system.homogeneous_constraints().distribute(v);
+      system.displacement_changed();
+      if (particles.n_particles() > 0)
+        {
+          std::vector<Tensor<1, dim>> u0(particles.n_particles());
+          std::vector<double>         V(particles.n_particles());
+          for (unsigned int k = 0; k < u0.size(); ++k)
+            {
+              V[k] = particles.volume(k);
+              for (unsigned int c = 0; c < dim; ++c)
+                u0[k][c] = (*view.u_full)[particles.dof(k, c)];
+            }
+          disorder_reference = TimeIntegration::rms_about_mean(u0, V);
+        }
+      assemble_masses(*view.dof_handler,
+                      *view.meshfree,
+                      system.homogeneous_constraints(),
+                      system.tangent(),
+                      prm.material.density,
+                      !explicit_,
+                      masses);
+      std::unique_ptr<TimeIntegrator> integrator;
+      if (explicit_)
+        integrator = std::make_unique<Leapfrog>(masses);
+      else
+        integrator =
+          std::make_unique<Newmark>(masses, prm.time, prm.newton, access.pcout);
+
+      TimeStepper::Operations operations;
+      operations.started = [&](const TimeStepper::Result &r) {
+        d.stable_time_step = r.stable_time_step;
+        d.n_steps          = r.n_steps;
+        d.time_step        = r.time_step;
+        summary.load_steps = 0;
+        summary.converged  = true;
+      };
+      operations.step_done = [&](const unsigned int step,
+                                 const unsigned int iterations) {
+        access.history.commit();
+        summary.newton_iterations += iterations;
+        summary.load_steps                 = step;
+        summary.newton_residuals_last_step = integrator->last_residuals;
+      };
+      operations.output  = access.postprocess;
+      operations.give_up = [&](const unsigned int last_step, const double t) {
+        access.history.revert();
+        summary.converged = false;
+        access.write_files(last_step, t);
+      };
+      const TimeStepper::Result result =
+        TimeStepper(time, prm.output.directory, access.pcout)
+          .run(system,
+               *integrator,
+               masses,
+               v,
+               energies,
+               summary.dynamics.disorder,
+               operations);
+      const unsigned int n_steps = result.n_steps;
+      const double       t       = result.final_time;
+
+      std::vector<Tensor<2, dim>> F(particles.n_particles());
+      for (unsigned int k = 0; k < F.size(); ++k)
+        F[k] = view.particle_deformation_gradient(k);
+      if (particles.n_particles() > 0)
+        Postprocess::ParticleFields<dim>::write_table(view, F);
+      Postprocess::NodalStresses<dim>::write(view, F, summary);
+      if (summary.have_errors)
+        access.pcout << "  errors: L2 relative = " << summary.L2_relative
+                     << ", H1 relative = " << summary.H1_relative << std::endl;
+      if (!explicit_)
+        access.pcout << "  total Newton iterations: "
+                     << summary.newton_iterations << std::endl;
+      access.write_files(n_steps, t);
+    }
+
+
+
+    template class DynamicAnalysis<2>;
+    template class DynamicAnalysis<3>;
+  } // namespace Analysis
+} // namespace pg

@@ -1,0 +1,63 @@
+#include <pg/analysis/eigenmode_analysis.h>
+#include <pg/analysis/eigenmodes.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace pg
+{
+  namespace Analysis
+  {
+    template <int dim>
+    void
+    EigenmodeAnalysis<dim>::run()
+    {
+      const auto       &access  = this->access;
+      const auto       &prm     = access.parameters;
+      auto             &summary = access.summary;
+      const std::string failure = access.system.assemble_residual(true);
+      AssertThrow(failure.empty(), ExcMessage(failure));
+      const std::vector<double> values =
+        dense_eigenvalues(access.system.tangent());
+      summary.max_eigenvalue     = values.back();
+      summary.n_zero_eigenvalues = 0;
+      for (const double v : values)
+        if (std::abs(v) < 1e-10 * summary.max_eigenvalue)
+          ++summary.n_zero_eigenvalues;
+      summary.eigenvalues.assign(
+        values.begin(),
+        values.begin() +
+          std::min<std::size_t>(values.size(), prm.analysis.n_eigenvalues));
+      summary.converged = true;
+
+      std::ostringstream line;
+      line << std::setprecision(4) << "  eigenvalues: max " << values.back()
+           << ", below 1e-10 max: " << summary.n_zero_eigenvalues
+           << "\n  smallest non-zero:";
+      for (unsigned int i = summary.n_zero_eigenvalues;
+           i <
+           std::min<std::size_t>(values.size(), summary.n_zero_eigenvalues + 6);
+           ++i)
+        line << " " << values[i];
+      access.pcout << line.str() << std::endl;
+
+      access.write_files(0, 0.);
+      if (access.root)
+        {
+          std::ofstream table(prm.output.directory + "/eigenvalues.txt");
+          table << "# index  eigenvalue (real part, ascending)\n"
+                << std::setprecision(12);
+          for (unsigned int i = 0; i < summary.eigenvalues.size(); ++i)
+            table << i + 1 << " " << summary.eigenvalues[i] << "\n";
+        }
+    }
+
+
+
+    template class EigenmodeAnalysis<2>;
+    template class EigenmodeAnalysis<3>;
+  } // namespace Analysis
+} // namespace pg

@@ -1,0 +1,249 @@
+#include <pg/analysis/inf_sup.h>
+#include <pg/analysis/inf_sup_analysis.h>
+#include <pg/base/exceptions.h>
+#include <pg/elements/q1_cell.h>
+#include <pg/elements/quadrature_table.h>
+#include <pg/postprocess/output.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace pg
+{
+  namespace Analysis
+  {
+    template <int dim>
+    InfSupAnalysis<dim>::InfSupAnalysis(const Access<dim>  &access,
+                                        const SetUpProblem &set_up)
+      : Interface<dim>(access)
+      , set_up(set_up)
+    {}
+
+
+
+    template <int dim>
+    void
+    InfSupAnalysis<dim>::assemble_forms(const Access<dim>           &level,
+                                        LinearAlgebra::SparseMatrix &T,
+                                        LinearAlgebra::SparseMatrix &S)
+    {
+      Assert(level.view != nullptr, ExcInternalError());
+      const Postprocess::ProblemView<dim> &view = *level.view;
+      const AffineConstraints<double>     &zero_constraints =
+        level.system.homogeneous_constraints();
+      const InfSup::PressureProjectionMaterial<dim> t_material;
+      const InfSup::H1Material<dim>                 s_material;
+      const bool p0 = (level.parameters.analysis.pressure_space == "P0");
+      T.copy_from(level.system.tangent());
+      T = 0;
+      S.copy_from(level.system.tangent());
+      S = 0;
+      FullMatrix<double> t_local, s_local;
+      Vector<double>     residual;
+      // The undeformed state: y^b = X^b - X^0 (u = 0; both forms are linear).
+      const auto add = [&](const QuadratureTable<dim>                 &table,
+                           const std::vector<Tensor<1, dim>>          &y,
+                           const std::vector<types::global_dof_index> &dofs) {
+        if (p0)
+          InfSup::p0_pressure_projection(table, t_local);
+        else
+          assemble_element(table, y, t_material, residual, &t_local);
+        assemble_element(table, y, s_material, residual, &s_local);
+        zero_constraints.distribute_local_to_global(t_local, dofs, T);
+        zero_constraints.distribute_local_to_global(s_local, dofs, S);
+      };
+      FEValues<dim>                        fe_values(*view.fe_scalar,
+                              QGauss<dim>(2),
+                              update_gradients | update_JxW_values);
+      QuadratureTable<dim>                 table;
+      std::vector<Tensor<1, dim>>          y;
+      std::vector<types::global_dof_index> dofs;
+      for (const auto &cell : *view.owned_fe_cells)
+        {
+          fe_values.reinit(
+            typename Triangulation<dim>::active_cell_iterator(cell));
+          fill_q1_table(fe_values, table);
+          dofs.resize(view.fe->n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          y.resize(cell->n_vertices());
+          for (unsigned int b = 0; b < y.size(); ++b)
+            y[b] = cell->vertex(b) - cell->vertex(0);
+          add(table, y, dofs);
+        }
+      const ParticleSet<dim> &particles = *view.particles;
+      for (unsigned int f = 0; f < view.owned_families->size(); ++f)
+        {
+          const unsigned int k       = (*view.owned_families)[f];
+          const auto         members = view.families->members(k);
+          dofs.resize(members.size() * dim);
+          y.resize(members.size());
+          for (unsigned int b = 0; b < members.size(); ++b)
+            {
+              y[b] = particles.position(members[b]) - particles.position(k);
+              for (unsigned int c = 0; c < dim; ++c)
+                dofs[b * dim + c] = particles.dof(members[b], c);
+            }
+          add((*view.family_tables)[f], y, dofs);
+        }
+      T.compress(VectorOperation::add);
+      S.compress(VectorOperation::add);
+    }
+
+
+
+    template <int dim>
+    void
+    InfSupAnalysis<dim>::run()
+    {
+      const auto &access      = this->access;
+      const auto &prm         = access.parameters;
+      const auto &formulation = access.formulation;
+      using Method            = FormulationCode::Method;
+      AssertThrow(formulation.method == Method::fem ||
+                    formulation.method == Method::pbg,
+                  ExcBadParameter(
+                    "Discretization/Formulation",
+                    formulation.text,
+                    "the inf-sup test ('Analysis/Type = inf-sup') solves a "
+                    "symmetric generalised eigenproblem, and PPG tangents are "
+                    "not symmetric: use a PBG formulation (or FEM)."));
+      const std::vector<unsigned int> &series =
+        prm.analysis.inf_sup_subdivisions;
+      const double       tolerance = prm.analysis.inf_sup_zero_tolerance;
+      const unsigned int max_size  = 6000;
+      // Refuse too big problems before computing anything: a clamped square
+      // has dim (N - 1)^dim free unknowns, fewer constraints give more.
+      for (const unsigned int N : series)
+        AssertThrow(dim * std::pow(N - 1., dim) <= max_size,
+                    ExcBadParameter("Analysis/Inf-sup subdivisions",
+                                    std::to_string(N),
+                                    "the dense generalised eigensolver handles "
+                                    "at most " +
+                                      std::to_string(max_size) +
+                                      " free unknowns, and this mesh has at "
+                                      "least " +
+                                      std::to_string(static_cast<unsigned int>(
+                                        dim * std::pow(N - 1., dim))) +
+                                      ": use fewer subdivisions."));
+
+      RunSummary::InfSup result;
+      result.pressure_space = prm.analysis.pressure_space;
+      result.zero_tolerance = tolerance;
+      const double nan      = std::numeric_limits<double>::quiet_NaN();
+      const bool   p0       = (prm.analysis.pressure_space == "P0");
+      RunSummary   last;
+      for (unsigned int i = 0; i < series.size(); ++i)
+        {
+          const unsigned int   N        = series[i];
+          Parameters::Geometry geometry = prm.geometry;
+          geometry.mesh                 = "hyper rectangle";
+          geometry.lower_corner         = std::vector<double>(dim, 0.);
+          geometry.upper_corner         = std::vector<double>(dim, 1.);
+          geometry.subdivisions         = {N};
+          geometry.global_refinement    = 0;
+          // The first mesh echoes its set-up, the others stay quiet.
+          std::ostringstream quiet;
+          set_up(
+            geometry,
+            i == 0 ? access.pcout.get_stream() : quiet,
+            [&](const Access<dim> &level) {
+              LinearAlgebra::SparseMatrix T, S;
+              assemble_forms(level, T, S);
+              const InfSup::Value value =
+                InfSup::compute_value(T,
+                                      S,
+                                      level.system.homogeneous_constraints(),
+                                      tolerance,
+                                      max_size);
+              // n_p: one pressure per element (Q1 cell or family) for
+              // P0.
+              const double n_p = p0 ? level.view->owned_fe_cells->size() +
+                                        level.view->owned_families->size() :
+                                      nan;
+              result.N.push_back(N);
+              result.n_dofs.push_back(level.summary.n_dofs);
+              result.n_free.push_back(value.n_free);
+              result.n_pressure.push_back(n_p);
+              result.n_zero.push_back(value.n_zero);
+              // (7.15) with k = n_zero + 1
+              result.k_pm.push_back(
+                p0 ? value.n_zero + 1. - (value.n_free - n_p + 1.) : nan);
+              result.beta.push_back(value.beta);
+              result.slope.push_back(i == 0 ?
+                                       nan :
+                                       InfSup::loglog_slope(series[i - 1],
+                                                            result.beta[i - 1],
+                                                            N,
+                                                            value.beta));
+              result.lambda_max.push_back(value.lambda_max);
+              result.largest_zero.push_back(value.largest_zero /
+                                            value.lambda_max);
+
+              std::ostringstream line;
+              line << "  inf-sup N = " << N << ": " << value.n_free
+                   << " free DoFs";
+              if (p0)
+                line << ", " << n_p << " pressures";
+              line << ", zero eigenvalues " << value.n_zero
+                   << std::setprecision(3) << ", beta = " << value.beta;
+              if (i > 0)
+                line << std::fixed << std::setprecision(2)
+                     << ", slope = " << result.slope[i];
+              access.pcout << line.str() << std::endl;
+              last = level.summary;
+            });
+        }
+
+      // The table, also as inf_sup.txt.
+      std::ostringstream table;
+      table << "# inf-sup test (Chapelle & Bathe 1993; dissertation 7.2.5), '"
+            << formulation.text << "', pressure space " << result.pressure_space
+            << ", distortion " << prm.geometry.distortion << "\n"
+            << "# zero eigenvalues: lambda < " << tolerance
+            << " lambda_max; beta = sqrt(first non-zero lambda) (7.14); "
+            << "slope = -dlog(beta)/dlog(N); k_pm (7.15) for P0 only\n"
+            << "# N n_dofs n_u n_p zero k_pm beta slope lambda_max "
+            << "largest_zero/lambda_max\n";
+      for (unsigned int i = 0; i < result.N.size(); ++i)
+        {
+          const auto number = [](const double x) {
+            std::ostringstream s;
+            if (std::isnan(x))
+              s << "-";
+            else
+              s << std::setprecision(6) << x;
+            return s.str();
+          };
+          table << result.N[i] << " " << result.n_dofs[i] << " "
+                << result.n_free[i] << " " << number(result.n_pressure[i])
+                << " " << result.n_zero[i] << " " << number(result.k_pm[i])
+                << " " << number(result.beta[i]) << " "
+                << number(result.slope[i]) << " "
+                << number(result.lambda_max[i]) << " "
+                << number(result.largest_zero[i]) << "\n";
+        }
+      RunSummary &summary     = access.summary;
+      summary                 = last;
+      summary.inf_sup         = result;
+      summary.converged       = true;
+      summary.timing["total"] = access.total_timer.wall_time();
+      if (access.root)
+        {
+          std::ofstream file(prm.output.directory + "/inf_sup.txt");
+          file << table.str();
+          write_summary_json(summary, prm.output.directory + "/summary.json");
+        }
+    }
+
+
+
+    template class InfSupAnalysis<2>;
+    template class InfSupAnalysis<3>;
+  } // namespace Analysis
+} // namespace pg

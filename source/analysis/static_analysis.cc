@@ -1,0 +1,68 @@
+#include <pg/analysis/static_analysis.h>
+#include <pg/solvers/load_stepper.h>
+
+namespace pg
+{
+  namespace Analysis
+  {
+    template <int dim>
+    StaticAnalysis<dim>::StaticAnalysis(
+      const Access<dim>                                 &access,
+      const std::function<bool(double, unsigned int &)> &solve_step,
+      const std::function<std::string()>                &last_failure)
+      : Interface<dim>(access)
+      , solve_step(solve_step)
+      , last_failure(last_failure)
+    {}
+
+
+
+    template <int dim>
+    void
+    StaticAnalysis<dim>::run()
+    {
+      const auto       &access  = this->access;
+      const auto       &prm     = access.parameters;
+      MechanicalSystem &system  = access.system;
+      RunSummary       &summary = access.summary;
+      summary.load_steps        = 0;
+      access.postprocess(0, 0., 0);
+
+      // The displacement of the last accepted (sub)step (zero at first).
+      LinearAlgebra::Vector   converged(system.locally_owned_dofs(),
+                                      system.communicator());
+      LoadStepper::Operations stepping;
+      stepping.solve  = solve_step;
+      stepping.commit = [&]() {
+        converged = system.displacement();
+        access.history.commit();
+      };
+      stepping.revert = [&]() {
+        system.displacement() = converged;
+        system.displacement_changed();
+        access.history.revert();
+      };
+      stepping.step_done = [&](const unsigned int step,
+                               const double       t,
+                               const unsigned int iterations) {
+        summary.newton_iterations += iterations;
+        summary.load_steps = step;
+        summary.converged  = true;
+        access.postprocess(step, t, iterations);
+      };
+      stepping.give_up = [&](const unsigned int step, const double t) {
+        summary.converged = false;
+        access.write_files(step, t);
+      };
+      stepping.last_failure = last_failure;
+      LoadStepper(prm.loading, prm.output.directory, access.pcout)
+        .run(stepping);
+      access.finalize(prm.loading.load_steps, 1.);
+    }
+
+
+
+    template class StaticAnalysis<2>;
+    template class StaticAnalysis<3>;
+  } // namespace Analysis
+} // namespace pg
