@@ -25,6 +25,13 @@ namespace pg
      * also printed), one data file per series (series/<series>.dat) and a
      * gnuplot script (study.gp) that draws error against wall time and against
      * DoFs.
+     *
+     * A study is not an Analysis::Interface but one level above the
+     * analyses: it builds the parameters of every run, runs a Problem for
+     * each (whose run() creates and runs the analysis 'Analysis/Type'
+     * names, usually a StaticAnalysis) and compares their RunSummary.
+     * Running is in study.cc, the report (write_results()) in
+     * study_report.cc.
      */
     namespace Study
     {
