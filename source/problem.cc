@@ -10,6 +10,7 @@
 #include <pg/base/formulation_code.h>
 #include <pg/base/linear_algebra.h>
 #include <pg/constraints/boundary_constraints.h>
+#include <pg/dofs/discretization.h>
 #include <pg/elements/correction_system.h>
 #include <pg/elements/cpd_interactions.h>
 #include <pg/elements/element_group.h>
@@ -28,6 +29,8 @@
 #include <pg/postprocess/postprocessor.h>
 #include <pg/postprocess/postprocessors.h>
 #include <pg/postprocess/problem_view.h>
+#include <pg/postprocess/sample_locations.h>
+#include <pg/postprocess/setup_report.h>
 #include <pg/problem.h>
 #include <pg/solvers/linear_solver.h>
 #include <pg/solvers/load_stepper.h>
@@ -304,45 +307,47 @@ namespace pg
                   const double                 factor,
                   LinearAlgebra::Vector       &target) const override;
 
-    /**
-     * GridTools::diameter() of the final mesh (O(boundary vertices^2), so
-     * computed once in setup()): the scale of the geometric tolerances of
-     * make_constraints(), which dynamics calls every step.
-     */
-    double mesh_diameter = 0;
-    /** What create_mesh() did to a mesh file, for the banner. */
-    std::string mesh_notes;
 
-    const Parameters::AllParameters<dim> &prm;
-    /** prm.geometry, replaced per mesh by the inf-sup analysis. */
-    Parameters::Geometry                      geometry;
+    const Parameters::AllParameters<dim>     &prm;
     const MPI_Comm                            comm;
     const bool                                root;
     ConditionalOStream                        pcout;
     const FormulationCode                     formulation;
     std::unique_ptr<Materials::Material<dim>> material;
 
-    parallel::shared::Triangulation<dim> triangulation;
-    const FESystem<dim>                  fe;
-    const FE_Q<dim>                      fe_scalar;
-    DoFHandler<dim>                      dof_handler;
-    std::vector<bool>                    meshfree;
-
-    ParticleSet<dim>                     particles;
-    FamilySet<dim>                       families;
-    std::unique_ptr<FamilyElements<dim>> family_elements;
-    /**
-     * Formulation = CPD: the interactions, assembled in place of the
-     * family tables (family_elements then serves the particle deformation
-     * gradients of the output only, as PBG U1).
-     */
-    std::unique_ptr<CpdInteractions<dim>>                       cpd;
-    std::vector<unsigned int>                                   owned_families;
-    std::vector<QuadratureTable<dim>>                           family_tables;
-    std::vector<typename DoFHandler<dim>::active_cell_iterator> owned_fe_cells;
-    /** Meshfree cells loaded by FE-consistent face tractions ('geometry'). */
+    /** Mesh, DoFs, particles, families and tables (set up in setup()). */
+    Discretization<dim> discretization;
+    /** @name Short names of the members of discretization */
+    /** @{ */
+    Parameters::Geometry                 &geometry = discretization.geometry;
+    parallel::shared::Triangulation<dim> &triangulation =
+      discretization.triangulation;
+    const FESystem<dim> &fe            = discretization.fe;
+    const FE_Q<dim>     &fe_scalar     = discretization.fe_scalar;
+    DoFHandler<dim>     &dof_handler   = discretization.dof_handler;
+    std::vector<bool>   &meshfree      = discretization.meshfree;
+    IndexSet            &owned_dofs    = discretization.owned_dofs;
+    IndexSet            &relevant_dofs = discretization.relevant_dofs;
+    ParticleSet<dim>    &particles     = discretization.particles;
+    FamilySet<dim>      &families      = discretization.families;
+    std::unique_ptr<FamilyElements<dim>> &family_elements =
+      discretization.family_elements;
+    std::unique_ptr<CpdInteractions<dim>> &cpd = discretization.cpd;
+    std::vector<unsigned int> &owned_families  = discretization.owned_families;
+    std::vector<QuadratureTable<dim>> &family_tables =
+      discretization.family_tables;
     std::vector<typename DoFHandler<dim>::active_cell_iterator>
-      owned_meshfree_neumann_cells;
+      &owned_fe_cells = discretization.owned_fe_cells;
+    std::vector<typename DoFHandler<dim>::active_cell_iterator>
+      &owned_meshfree_neumann_cells =
+        discretization.owned_meshfree_neumann_cells;
+    double      &mesh_diameter = discretization.mesh_diameter;
+    std::string &mesh_notes    = discretization.mesh_notes;
+    double      &time_mesh     = discretization.time_mesh;
+    double      &time_setup    = discretization.time_setup;
+    double      &time_shape    = discretization.time_shape;
+    /** @} */
+
     /** The cell and reference coordinates of every 'Output/Points' entry. */
     std::vector<
       std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>
@@ -352,10 +357,9 @@ namespace pg
     /** Unit-stress residual d^k of every particle (section 8.2). */
     std::vector<Tensor<1, dim>> unit_stress;
 
-    IndexSet                    owned_dofs, relevant_dofs;
     AffineConstraints<double>   constraints, zero_constraints;
     LinearAlgebra::SparseMatrix matrix;
-    LinearAlgebra::Vector       solution, solution_owned, converged_solution;
+    LinearAlgebra::Vector       solution, solution_owned;
     LinearAlgebra::Vector       update, rhs, force;
     Vector<double>              u_full;
 
@@ -410,8 +414,7 @@ namespace pg
     TableHandler statistics;
     Timer        total_timer;
     /** Wall times (s) of the phases, reported in summary.json. */
-    double time_mesh = 0, time_setup = 0, time_shape = 0, time_vc = 0,
-           time_assembly = 0, time_solve = 0;
+    double time_vc = 0, time_assembly = 0, time_solve = 0;
     /** Errors, statistics, output (started and stopped around them). */
     Timer postprocess_timer;
 
@@ -430,18 +433,12 @@ namespace pg
     const MPI_Comm                        mpi_communicator,
     std::ostream                         &out)
     : prm(parameters)
-    , geometry(parameters.geometry)
     , comm(mpi_communicator)
     , root(Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , pcout(out, root)
     , formulation(parse_formulation_code(parameters.discretization.formulation))
     , material(Materials::create_material<dim>(parameters.material))
-    , triangulation(mpi_communicator,
-                    Triangulation<dim>::none,
-                    false,
-                    parallel::shared::Triangulation<dim>::partition_metis)
-    , fe(FE_Q<dim>(1), dim)
-    , fe_scalar(1)
+    , discretization(mpi_communicator, parameters.geometry)
     , traction_from_test_functions(
         parameters.boundary_conditions.particle_traction_area ==
           "test functions" ||
@@ -466,144 +463,33 @@ namespace pg
   void
   Problem<dim>::Implementation::setup()
   {
+    discretization.reinit(
+      formulation,
+      prm.discretization,
+      prm.cpd,
+      [this](const typename DoFHandler<dim>::active_cell_iterator &cell) {
+        return !traction_from_test_functions && !traction_from_exact_stress &&
+               loads.has_neumann_face(cell);
+      });
     Timer timer;
-    Mesh::create_mesh(geometry, triangulation, &mesh_notes);
-    time_mesh += timer.wall_time();
-    timer.restart();
-    const bool fem = (formulation.method == FormulationCode::Method::fem);
-    meshfree = fem ? std::vector<bool>(triangulation.n_active_cells(), false) :
-                     Mesh::mark_meshfree_cells(geometry, triangulation);
-
-    dof_handler.reinit(triangulation);
-    dof_handler.distribute_dofs(fe);
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      Assert(fe.system_to_component_index(i).first == i % dim &&
-               fe.system_to_component_index(i).second == i / dim,
-             ExcInternalError());
-    owned_dofs    = dof_handler.locally_owned_dofs();
-    relevant_dofs = complete_index_set(dof_handler.n_dofs());
-
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          if (!meshfree[cell->active_cell_index()])
-            owned_fe_cells.push_back(cell);
-          else if (!traction_from_test_functions &&
-                   !traction_from_exact_stress && has_neumann_face(cell))
-            owned_meshfree_neumann_cells.push_back(cell);
-        }
-
     summary.dimension   = dim;
     summary.formulation = formulation.text;
     summary.n_dofs      = dof_handler.n_dofs();
     for (const bool m : meshfree)
       (m ? summary.n_meshfree_cells : summary.n_fe_cells) += 1;
-
-    // Particles, families, and the quadrature table of every family owned
-    // by this rank (owned = its master's DoFs are owned here).
-    particles.reinit(dof_handler, meshfree);
     summary.n_particles = particles.n_particles();
-    time_setup += timer.wall_time();
-    timer.restart();
     if (particles.n_particles() > 0)
-      {
-        const bool is_cpd =
-          (formulation.method == FormulationCode::Method::cpd);
-        // CPD with partial volumes: bonds reach delta + h/2
-        families.reinit(particles,
-                        prm.discretization.horizon_factor +
-                          (is_cpd && prm.cpd.partial_volumes ? 0.5 : 0.),
-                        prm.discretization.nearest_neighbours,
-                        prm.discretization.horizon);
-        summary.n_families = families.n_families();
-        if (is_cpd)
-          cpd = std::make_unique<CpdInteractions<dim>>(
-            particles,
-            families,
-            CpdConstants{prm.cpd.C1,
-                         prm.cpd.C2,
-                         prm.cpd.C3,
-                         prm.cpd.partial_volumes},
-            prm.discretization.horizon_factor,
-            prm.discretization.horizon);
-        family_elements = std::make_unique<FamilyElements<dim>>(
-          particles,
-          families,
-          is_cpd ? parse_formulation_code("PBG U1") : formulation,
-          ShapeFunctions::parse_base(prm.discretization.shape_functions),
-          prm.discretization.weight_exponent);
-        family_elements->initialize();
-        for (unsigned int k = 0; k < particles.n_particles(); ++k)
-          if (owned_dofs.is_element(particles.dof(k, 0)))
-            owned_families.push_back(k);
-        family_tables.resize(owned_families.size());
-        for (unsigned int f = 0; f < owned_families.size(); ++f)
-          family_elements->build(owned_families[f], family_tables[f]);
-      }
-    time_shape += timer.wall_time();
-    timer.restart();
+      summary.n_families = families.n_families();
 
     compute_unit_stress_residual();
 
     // Locate the reference points once (every rank knows all cells).
-    const MappingQ1<dim> mapping;
-    for (const auto &[name, coordinates] : prm.output.points)
-      {
-        Point<dim> p;
-        for (unsigned int d = 0; d < dim; ++d)
-          p[d] = coordinates[d];
-        std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
-             found;
-        bool inside = true;
-        try
-          {
-            found =
-              GridTools::find_active_cell_around_point(mapping, dof_handler, p);
-            inside = (found.first.state() == IteratorState::valid);
-          }
-        catch (...)
-          {
-            inside = false;
-          }
-        AssertThrow(inside,
-                    ExcBadParameter("Output/Points",
-                                    name,
-                                    "this point lies outside the mesh."));
-        point_locations.push_back(found);
-      }
-    // The samples of 'Output/Lines'; those outside the mesh (in a hole) are
-    // left out.
-    line_locations.clear();
-    for (unsigned int l = 0; l < prm.output.lines.size(); ++l)
-      {
-        Point<dim> start, end;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            start[d] = prm.output.lines[l].start[d];
-            end[d]   = prm.output.lines[l].end[d];
-          }
-        const unsigned int n = prm.output.line_samples;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const Point<dim> p = start + (end - start) * (1. * i / (n - 1));
-            try
-              {
-                const auto found =
-                  GridTools::find_active_cell_around_point(mapping,
-                                                           dof_handler,
-                                                           p);
-                if (found.first.state() == IteratorState::valid)
-                  line_locations.push_back(
-                    {l, p.distance(start), p, found.first, found.second});
-              }
-            catch (...)
-              {
-                // outside the mesh: no sample
-              }
-          }
-      }
+    point_locations =
+      Postprocess::locate_points(dof_handler, prm.output.points);
+    line_locations = Postprocess::locate_line_samples(dof_handler,
+                                                      prm.output.lines,
+                                                      prm.output.line_samples);
 
-    mesh_diameter = GridTools::diameter(triangulation);
     make_constraints(constraints, false);
     make_constraints(zero_constraints, true);
 
@@ -644,128 +530,23 @@ namespace pg
 
     solution.reinit(owned_dofs, relevant_dofs, comm);
     solution_owned.reinit(owned_dofs, comm);
-    converged_solution.reinit(owned_dofs, comm);
     force.reinit(owned_dofs, comm);
     u_full.reinit(dof_handler.n_dofs());
     time_setup += timer.wall_time() - time_vc;
     compute_assembly_cost();
 
     // The echo of what was understood (no wall times: tests compare it).
-    unsigned int min_family = 0, max_family = 0;
-    double       mean_family = 0;
-    if (families.n_families() > 0)
-      {
-        min_family = max_family = families.members(0).size();
-        for (unsigned int k = 0; k < families.n_families(); ++k)
-          {
-            const unsigned int s = families.members(k).size();
-            min_family           = std::min(min_family, s);
-            max_family           = std::max(max_family, s);
-            mean_family += s;
-          }
-        mean_family /= families.n_families();
-      }
-    pcout << "pg_solve: " << dim << "-D, formulation '" << formulation.text
-          << "'";
-    if (formulation.method != FormulationCode::Method::fem && !cpd)
-      pcout << " (" << formulation.method_name() << ", "
-            << (formulation.points == FormulationCode::Points::unl ? "Unl" :
-                formulation.points == FormulationCode::Points::u1  ? "U1" :
-                                                                     "U2")
-            << ", "
-            << (formulation.points == FormulationCode::Points::u2 ?
-                  std::string("WTE2") :
-                  prm.discretization.shape_functions)
-            << ", bond correction "
-            << (formulation.bond_correction ? "on" : "off") << ")";
-    if (!formulation.notice().empty())
-      pcout << "\n  " << formulation.notice();
-    if (cpd)
-      {
-        const auto n = cpd->n_interactions();
-        pcout << "\n  CPD:             C1 = " << prm.cpd.C1
-              << ", C2 = " << prm.cpd.C2 << ", C3 = " << prm.cpd.C3
-              << (prm.cpd.partial_volumes ? ", partial volumes" : "")
-              << "\n  interactions:    " << n[0] << " bonds, " << n[1]
-              << " triangles, " << n[2] << " tetrahedra";
-      }
-    if (!cpd || summary.n_fe_cells > 0)
-      pcout << "\n  material:        " << prm.material.model
-            << ", E = " << prm.material.youngs_modulus
-            << ", nu = " << prm.material.poissons_ratio;
-    pcout << "\n"
-          << "  cells:           " << triangulation.n_active_cells() << " ("
-          << summary.n_fe_cells << " finite elements, "
-          << summary.n_meshfree_cells << " meshfree)\n"
-          << mesh_notes << "  particles:       " << particles.n_particles()
-          << "\n";
-    if (families.n_families() > 0 && prm.discretization.horizon > 0)
-      pcout << "  horizon:         " << prm.discretization.horizon
-            << " (absolute)\n";
-    if (families.n_families() > 0)
-      {
-        std::ostringstream mean;
-        mean << std::fixed << std::setprecision(1) << mean_family;
-        pcout << "  family size:     min " << min_family << ", mean "
-              << mean.str() << ", max " << max_family << " (master included)"
-              << "\n";
-      }
-    if (!prm.boundary_conditions.neumann.empty() && particles.n_particles())
-      {
-        // How much of the geometric Neumann area the test functions see:
-        // sum of n . d^k over the particles of Neumann faces divided by the
-        // sum of |a^k| (1 for a variationally consistent method).
-        double seen = 0, geometric = 0;
-        for (unsigned int k = 0; k < particles.n_particles(); ++k)
-          for (const auto &[id, area] : particles.boundary_area_vectors(k))
-            if (is_neumann(id))
-              {
-                seen += boundary_area_weights[k].at(id);
-                geometric += area.norm();
-              }
-        if (geometric > 0)
-          {
-            std::ostringstream percent;
-            percent << std::fixed << std::setprecision(1)
-                    << 100. * seen / geometric;
-            pcout << "  particle traction area: "
-                  << (traction_from_exact_stress   ? "exact stress" :
-                      traction_from_test_functions ? "test functions" :
-                                                     "geometry")
-                  << " (the test functions see " << percent.str()
-                  << " % of the Neumann area)\n";
-          }
-      }
-    if (formulation.variational_consistency)
-      {
-        std::ostringstream vc;
-        vc << std::scientific << std::setprecision(1)
-           << summary.max_interior_unit_stress_residual
-           << ", max |alpha| h = " << std::fixed << std::setprecision(2)
-           << summary.max_correction_factor;
-        pcout << "  VC correction:   interior |d^k|/h^(dim-1) <= " << vc.str()
-              << "\n";
-        unsigned int n_v1 = 0;
-        for (unsigned int k = 0; k < particles.n_particles(); ++k)
-          n_v1 += (family_elements->family_correction_function(k) ==
-                     FormulationCode::CorrectionFunction::v1 &&
-                   formulation.correction_function !=
-                     FormulationCode::CorrectionFunction::v1);
-        if (n_v1 > 0)
-          pcout << "  VC on the FE/meshfree interface: V1 in the " << n_v1
-                << " families of interface particles (doc/ambiguities.md, "
-                   "item 17)\n";
-        if (formulation.second_order_consistency)
-          {
-            std::ostringstream vc2;
-            vc2 << std::scientific << std::setprecision(1)
-                << summary.max_interior_second_order_residual;
-            pcout << "  VC2 correction:  interior |D^k|/h^dim <= " << vc2.str()
-                  << "\n";
-          }
-      }
-    pcout << "  DoFs:            " << dof_handler.n_dofs() << "\n"
-          << "  matrix nonzeros: " << summary.matrix_nonzeros << std::endl;
+    Postprocess::print_setup_report(
+      pcout,
+      prm,
+      formulation,
+      discretization,
+      summary,
+      traction_from_exact_stress   ? "exact stress" :
+      traction_from_test_functions ? "test functions" :
+                                     "geometry",
+      [this](const types::boundary_id id) { return loads.is_neumann(id); },
+      boundary_area_weights);
 
     // The state at every evaluation point of every group (the tables are
     // final now: the VC correction keeps their points).

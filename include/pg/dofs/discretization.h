@@ -1,0 +1,130 @@
+#ifndef pg_dofs_discretization_h
+#define pg_dofs_discretization_h
+
+#include <pg/base/formulation_code.h>
+#include <pg/base/global.h>
+#include <pg/elements/cpd_interactions.h>
+#include <pg/elements/cpd_parameters.h>
+#include <pg/elements/discretization_parameters.h>
+#include <pg/elements/family_elements.h>
+#include <pg/elements/quadrature_table.h>
+#include <pg/families/family_set.h>
+#include <pg/mesh/geometry_parameters.h>
+#include <pg/mesh/particle_set.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pg
+{
+  /**
+   * The discretization of a run: the mesh, the Q1 displacement DoFs, the
+   * meshfree cells with their particles and families, the family elements
+   * (or the CPD interactions) and the quadrature tables of the families this
+   * rank owns. reinit() builds them in this order from the 'Geometry',
+   * 'Discretization' and 'CPD' parameters; the objects keep their addresses
+   * afterwards (the ProblemView points to them).
+   *
+   * The members are public data, as in a deal.II tutorial program's class:
+   * the problem wires them into the element groups, the VC correction
+   * rebuilds family_elements and family_tables, the postprocessors read
+   * them through the ProblemView.
+   *
+   * Ownership: a cell is owned by the rank of its METIS subdomain; a family
+   * is owned by the rank that owns the DoFs of its master particle.
+   */
+  template <int dim>
+  class Discretization
+  {
+  public:
+    using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
+
+    /**
+     * An empty discretization on @p mpi_communicator (a METIS-partitioned
+     * shared triangulation) for the mesh described by @p geometry.
+     */
+    Discretization(const MPI_Comm              mpi_communicator,
+                   const Parameters::Geometry &geometry);
+
+    /**
+     * Create the mesh of #geometry, mark the meshfree cells (none for
+     * FEM), distribute the DoFs, collect the owned FE cells and the owned
+     * meshfree cells for which @p loaded_by_face_traction is true, then the
+     * particles and, if there are any, the families (bonds reaching
+     * delta + h/2 for CPD with partial volumes), the CPD interactions, the
+     * family elements (PBG U1 for CPD: the particle deformation gradients
+     * of the output), the owned families and their quadrature tables.
+     * Finally the relevant DoFs and the mesh diameter. Adds the wall times
+     * (s) to time_mesh, time_setup and time_shape. Call once.
+     */
+    void
+    reinit(
+      const FormulationCode            &formulation,
+      const Parameters::Discretization &discretization_parameters,
+      const Parameters::Cpd            &cpd_parameters,
+      const std::function<bool(const CellIterator &)> &loaded_by_face_traction);
+
+    /** 'Geometry', replaced per mesh by the inf-sup analysis. */
+    Parameters::Geometry geometry;
+
+    parallel::shared::Triangulation<dim> triangulation;
+    /** FESystem(FE_Q(1), dim) of the displacement and its FE_Q(1). */
+    const FESystem<dim> fe;
+    const FE_Q<dim>     fe_scalar;
+    DoFHandler<dim>     dof_handler;
+    /** Meshfree flag of every active cell (by active cell index). */
+    std::vector<bool> meshfree;
+
+    /** The DoFs this rank owns, and those it reads (ghosts included). */
+    IndexSet owned_dofs, relevant_dofs;
+
+    ParticleSet<dim>                     particles;
+    FamilySet<dim>                       families;
+    std::unique_ptr<FamilyElements<dim>> family_elements;
+    /**
+     * Formulation = CPD: the interactions, assembled in place of the
+     * family tables (family_elements then serves the particle deformation
+     * gradients of the output only, as PBG U1).
+     */
+    std::unique_ptr<CpdInteractions<dim>> cpd;
+    /** The masters of the families this rank owns, and their tables. */
+    std::vector<unsigned int>         owned_families;
+    std::vector<QuadratureTable<dim>> family_tables;
+    /** The finite element (Q1) cells this rank owns. */
+    std::vector<CellIterator> owned_fe_cells;
+    /** Meshfree cells loaded by FE-consistent face tractions ('geometry'). */
+    std::vector<CellIterator> owned_meshfree_neumann_cells;
+
+    /** What create_mesh() did to a mesh file, for the banner. */
+    std::string mesh_notes;
+    /**
+     * GridTools::diameter() of the final mesh (O(boundary vertices^2), so
+     * computed once in reinit()): the scale of the geometric tolerances of
+     * the constraints, which dynamics rebuilds every step.
+     */
+    double mesh_diameter = 0;
+
+    /**
+     * Wall times (s) of the mesh, of the DoFs and particles (the problem
+     * adds the rest of its set-up), and of the shape functions (families,
+     * family elements, tables).
+     */
+    double time_mesh = 0, time_setup = 0, time_shape = 0;
+
+  private:
+    /** relevant_dofs: the DoFs this rank reads (today all of them). */
+    void
+    compute_relevant_dofs();
+  };
+} // namespace pg
+
+#endif

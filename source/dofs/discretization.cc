@@ -1,0 +1,119 @@
+#include <pg/dofs/discretization.h>
+#include <pg/mesh/mesh_generator.h>
+#include <pg/shape_functions/shape_functions.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/grid/grid_tools.h>
+
+namespace pg
+{
+  template <int dim>
+  Discretization<dim>::Discretization(const MPI_Comm mpi_communicator,
+                                      const Parameters::Geometry &geometry)
+    : geometry(geometry)
+    , triangulation(mpi_communicator,
+                    Triangulation<dim>::none,
+                    false,
+                    parallel::shared::Triangulation<dim>::partition_metis)
+    , fe(FE_Q<dim>(1), dim)
+    , fe_scalar(1)
+  {}
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::reinit(
+    const FormulationCode                           &formulation,
+    const Parameters::Discretization                &discretization_parameters,
+    const Parameters::Cpd                           &cpd_parameters,
+    const std::function<bool(const CellIterator &)> &loaded_by_face_traction)
+  {
+    Timer timer;
+    Mesh::create_mesh(geometry, triangulation, &mesh_notes);
+    time_mesh += timer.wall_time();
+    timer.restart();
+    const bool fem = (formulation.method == FormulationCode::Method::fem);
+    meshfree = fem ? std::vector<bool>(triangulation.n_active_cells(), false) :
+                     Mesh::mark_meshfree_cells(geometry, triangulation);
+
+    dof_handler.reinit(triangulation);
+    dof_handler.distribute_dofs(fe);
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      Assert(fe.system_to_component_index(i).first == i % dim &&
+               fe.system_to_component_index(i).second == i / dim,
+             ExcInternalError());
+    owned_dofs = dof_handler.locally_owned_dofs();
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          if (!meshfree[cell->active_cell_index()])
+            owned_fe_cells.push_back(cell);
+          else if (loaded_by_face_traction(cell))
+            owned_meshfree_neumann_cells.push_back(cell);
+        }
+
+    // Particles, families, and the quadrature table of every family owned
+    // by this rank (owned = its master's DoFs are owned here).
+    particles.reinit(dof_handler, meshfree);
+    time_setup += timer.wall_time();
+    timer.restart();
+    if (particles.n_particles() > 0)
+      {
+        const bool is_cpd =
+          (formulation.method == FormulationCode::Method::cpd);
+        // CPD with partial volumes: bonds reach delta + h/2
+        families.reinit(particles,
+                        discretization_parameters.horizon_factor +
+                          (is_cpd && cpd_parameters.partial_volumes ? 0.5 : 0.),
+                        discretization_parameters.nearest_neighbours,
+                        discretization_parameters.horizon);
+        if (is_cpd)
+          cpd = std::make_unique<CpdInteractions<dim>>(
+            particles,
+            families,
+            CpdConstants{cpd_parameters.C1,
+                         cpd_parameters.C2,
+                         cpd_parameters.C3,
+                         cpd_parameters.partial_volumes},
+            discretization_parameters.horizon_factor,
+            discretization_parameters.horizon);
+        family_elements = std::make_unique<FamilyElements<dim>>(
+          particles,
+          families,
+          is_cpd ? parse_formulation_code("PBG U1") : formulation,
+          ShapeFunctions::parse_base(discretization_parameters.shape_functions),
+          discretization_parameters.weight_exponent);
+        family_elements->initialize();
+        for (unsigned int k = 0; k < particles.n_particles(); ++k)
+          if (owned_dofs.is_element(particles.dof(k, 0)))
+            owned_families.push_back(k);
+        family_tables.resize(owned_families.size());
+        for (unsigned int f = 0; f < owned_families.size(); ++f)
+          family_elements->build(owned_families[f], family_tables[f]);
+      }
+    time_shape += timer.wall_time();
+    timer.restart();
+
+    // After the families: a ghost set can be the DoFs of their members.
+    compute_relevant_dofs();
+    mesh_diameter = GridTools::diameter(triangulation);
+    time_setup += timer.wall_time();
+  }
+
+
+
+  template <int dim>
+  void
+  Discretization<dim>::compute_relevant_dofs()
+  {
+    relevant_dofs = complete_index_set(dof_handler.n_dofs());
+  }
+
+
+
+  template class Discretization<2>;
+  template class Discretization<3>;
+} // namespace pg

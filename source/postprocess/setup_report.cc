@@ -1,0 +1,167 @@
+#include <pg/postprocess/setup_report.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace pg
+{
+  namespace Postprocess
+  {
+    template <int dim>
+    void
+    print_setup_report(
+      const ConditionalOStream             &pcout,
+      const Parameters::AllParameters<dim> &prm,
+      const FormulationCode                &formulation,
+      const Discretization<dim>            &discretization,
+      const RunSummary                     &summary,
+      const std::string                    &particle_traction_area,
+      const std::function<bool(const types::boundary_id)> &is_neumann,
+      const std::vector<std::map<types::boundary_id, double>>
+        &boundary_area_weights)
+    {
+      const auto &particles = discretization.particles;
+      const auto &families  = discretization.families;
+      const auto &cpd       = discretization.cpd;
+
+      unsigned int min_family = 0, max_family = 0;
+      double       mean_family = 0;
+      if (families.n_families() > 0)
+        {
+          min_family = max_family = families.members(0).size();
+          for (unsigned int k = 0; k < families.n_families(); ++k)
+            {
+              const unsigned int s = families.members(k).size();
+              min_family           = std::min(min_family, s);
+              max_family           = std::max(max_family, s);
+              mean_family += s;
+            }
+          mean_family /= families.n_families();
+        }
+      pcout << "pg_solve: " << dim << "-D, formulation '" << formulation.text
+            << "'";
+      if (formulation.method != FormulationCode::Method::fem && !cpd)
+        pcout << " (" << formulation.method_name() << ", "
+              << (formulation.points == FormulationCode::Points::unl ? "Unl" :
+                  formulation.points == FormulationCode::Points::u1  ? "U1" :
+                                                                       "U2")
+              << ", "
+              << (formulation.points == FormulationCode::Points::u2 ?
+                    std::string("WTE2") :
+                    prm.discretization.shape_functions)
+              << ", bond correction "
+              << (formulation.bond_correction ? "on" : "off") << ")";
+      if (!formulation.notice().empty())
+        pcout << "\n  " << formulation.notice();
+      if (cpd)
+        {
+          const auto n = cpd->n_interactions();
+          pcout << "\n  CPD:             C1 = " << prm.cpd.C1
+                << ", C2 = " << prm.cpd.C2 << ", C3 = " << prm.cpd.C3
+                << (prm.cpd.partial_volumes ? ", partial volumes" : "")
+                << "\n  interactions:    " << n[0] << " bonds, " << n[1]
+                << " triangles, " << n[2] << " tetrahedra";
+        }
+      if (!cpd || summary.n_fe_cells > 0)
+        pcout << "\n  material:        " << prm.material.model
+              << ", E = " << prm.material.youngs_modulus
+              << ", nu = " << prm.material.poissons_ratio;
+      pcout << "\n"
+            << "  cells:           "
+            << discretization.triangulation.n_active_cells() << " ("
+            << summary.n_fe_cells << " finite elements, "
+            << summary.n_meshfree_cells << " meshfree)\n"
+            << discretization.mesh_notes
+            << "  particles:       " << particles.n_particles() << "\n";
+      if (families.n_families() > 0 && prm.discretization.horizon > 0)
+        pcout << "  horizon:         " << prm.discretization.horizon
+              << " (absolute)\n";
+      if (families.n_families() > 0)
+        {
+          std::ostringstream mean;
+          mean << std::fixed << std::setprecision(1) << mean_family;
+          pcout << "  family size:     min " << min_family << ", mean "
+                << mean.str() << ", max " << max_family << " (master included)"
+                << "\n";
+        }
+      if (!prm.boundary_conditions.neumann.empty() && particles.n_particles())
+        {
+          // How much of the geometric Neumann area the test functions see:
+          // sum of n . d^k over the particles of Neumann faces divided by
+          // the sum of |a^k| (1 for a variationally consistent method).
+          double seen = 0, geometric = 0;
+          for (unsigned int k = 0; k < particles.n_particles(); ++k)
+            for (const auto &[id, area] : particles.boundary_area_vectors(k))
+              if (is_neumann(id))
+                {
+                  seen += boundary_area_weights[k].at(id);
+                  geometric += area.norm();
+                }
+          if (geometric > 0)
+            {
+              std::ostringstream percent;
+              percent << std::fixed << std::setprecision(1)
+                      << 100. * seen / geometric;
+              pcout << "  particle traction area: " << particle_traction_area
+                    << " (the test functions see " << percent.str()
+                    << " % of the Neumann area)\n";
+            }
+        }
+      if (formulation.variational_consistency)
+        {
+          std::ostringstream vc;
+          vc << std::scientific << std::setprecision(1)
+             << summary.max_interior_unit_stress_residual
+             << ", max |alpha| h = " << std::fixed << std::setprecision(2)
+             << summary.max_correction_factor;
+          pcout << "  VC correction:   interior |d^k|/h^(dim-1) <= " << vc.str()
+                << "\n";
+          unsigned int n_v1 = 0;
+          for (unsigned int k = 0; k < particles.n_particles(); ++k)
+            n_v1 += (discretization.family_elements->family_correction_function(
+                       k) == FormulationCode::CorrectionFunction::v1 &&
+                     formulation.correction_function !=
+                       FormulationCode::CorrectionFunction::v1);
+          if (n_v1 > 0)
+            pcout << "  VC on the FE/meshfree interface: V1 in the " << n_v1
+                  << " families of interface particles (doc/ambiguities.md, "
+                     "item 17)\n";
+          if (formulation.second_order_consistency)
+            {
+              std::ostringstream vc2;
+              vc2 << std::scientific << std::setprecision(1)
+                  << summary.max_interior_second_order_residual;
+              pcout << "  VC2 correction:  interior |D^k|/h^dim <= "
+                    << vc2.str() << "\n";
+            }
+        }
+      pcout << "  DoFs:            " << discretization.dof_handler.n_dofs()
+            << "\n"
+            << "  matrix nonzeros: " << summary.matrix_nonzeros << std::endl;
+    }
+
+
+
+    template void
+    print_setup_report<2>(
+      const ConditionalOStream &,
+      const Parameters::AllParameters<2> &,
+      const FormulationCode &,
+      const Discretization<2> &,
+      const RunSummary &,
+      const std::string &,
+      const std::function<bool(const types::boundary_id)> &,
+      const std::vector<std::map<types::boundary_id, double>> &);
+    template void
+    print_setup_report<3>(
+      const ConditionalOStream &,
+      const Parameters::AllParameters<3> &,
+      const FormulationCode &,
+      const Discretization<3> &,
+      const RunSummary &,
+      const std::string &,
+      const std::function<bool(const types::boundary_id)> &,
+      const std::vector<std::map<types::boundary_id, double>> &);
+  } // namespace Postprocess
+} // namespace pg
