@@ -6,6 +6,7 @@
 #include <pg/assembly/assembler.h>
 #include <pg/assembly/loads.h>
 #include <pg/assembly/mass_matrix.h>
+#include <pg/assembly/particle_loads.h>
 #include <pg/base/exceptions.h>
 #include <pg/base/formulation_code.h>
 #include <pg/base/linear_algebra.h>
@@ -207,7 +208,7 @@ namespace pg
     /**
      * d^k of every particle from the current family tables (summed over
      * all ranks), the largest interior value for the summary and the
-     * boundary-area weights of the Neumann loads.
+     * boundary-area weights of the Neumann loads (ParticleLoads).
      */
     void
     compute_unit_stress_residual();
@@ -216,14 +217,17 @@ namespace pg
      * Build and solve the VC (or VC2) system (pg-methods.md sections
      * 11.4-11.7) in correction_system, hand the factors to the family
      * elements (PBG: test = trial corrected), record max |alpha^k| h,
-     * rebuild the family tables and d^k.
+     * rebuild the family tables and d^k (correct_family_tables()).
      */
     void
     correct_variational_consistency();
 
     /** Set the time of every parsed function to the load factor @p t. */
     void
-    set_load_factor(const double t) const;
+    set_load_factor(const double t) const
+    {
+      prm.set_load_factor(t);
+    }
 
     /**
      * The read-only view of the problem for the postprocessors, filled on
@@ -269,29 +273,17 @@ namespace pg
 
     /** Is @p id in 'Neumann' or in 'Neumann stress'? */
     bool
-    is_neumann(const types::boundary_id id) const;
-
-    /**
-     * The prescribed traction on boundary @p id at @p point with the
-     * outward unit normal @p normal: the 'Traction' function, or
-     * sigma . n from 'Boundary stress' for the 'Neumann stress' ids.
-     */
-    Tensor<1, dim>
-    prescribed_traction(const types::boundary_id id,
-                        const Point<dim>        &point,
-                        const Tensor<1, dim>    &normal) const;
+    is_neumann(const types::boundary_id id) const
+    {
+      return loads.is_neumann(id);
+    }
 
     bool
     has_neumann_face(
-      const typename DoFHandler<dim>::active_cell_iterator &cell) const;
-
-    /**
-     * The particle loads (the body force V^k rho_0 b and the tractions
-     * through the test functions) and the FE-consistent traction on
-     * meshfree Neumann faces: the load term of the Assembler.
-     */
-    void
-    add_particle_loads(Assembler<dim> &assembler) const;
+      const typename DoFHandler<dim>::active_cell_iterator &cell) const
+    {
+      return loads.has_neumann_face(cell);
+    }
 
     /**
      * f_ext at the time of the parsed functions: the loads are dead, so
@@ -354,8 +346,6 @@ namespace pg
       point_locations;
     /** The samples of 'Output/Lines'. */
     std::vector<Postprocess::LineSampleLocation<dim>> line_locations;
-    /** Unit-stress residual d^k of every particle (section 8.2). */
-    std::vector<Tensor<1, dim>> unit_stress;
 
     AffineConstraints<double>   constraints, zero_constraints;
     LinearAlgebra::SparseMatrix matrix;
@@ -363,38 +353,25 @@ namespace pg
     LinearAlgebra::Vector       update, rhs, force;
     Vector<double>              u_full;
 
-    /**
-     * Tractions on meshfree faces load particles through d^k ('Particle
-     * traction area' = test functions, or automatic with VC); otherwise by
-     * FE-consistent face quadrature.
-     */
-    const bool traction_from_test_functions;
-    /** 'Particle traction area = exact stress'. */
-    const bool traction_from_exact_stress;
-
-    /** grad u of the exact solution (Gradient expression if given). */
-    Tensor<2, dim>
-    exact_displacement_gradient(const Point<dim> &p) const;
-
-    /**
-     * The internal force at particle @p k of the exact stress,
-     * sum over the families e containing k of sum_q w_q P(X_q) T^{qk}.
-     */
-    Tensor<1, dim>
-    exact_stress_force(const unsigned int k) const;
-    /**
-     * The area of each boundary part b at particle k seen by the test
-     * functions: d^k = sum_b c_b n_b on the unit normals n_b of the parts
-     * at k (section 8.2). With one part c = n . d^k; at a corner the
-     * decomposition keeps the other part's area out of the load.
-     */
-    std::vector<std::map<types::boundary_id, double>> boundary_area_weights;
-
     /** The VC system, with its own matrix (VC codes only). */
     std::unique_ptr<CorrectionSystem<dim>> correction_system;
 
     /** The dead loads of 'Boundary conditions' and the body force. */
     const Loads<dim> loads;
+    /**
+     * The loads on the particles and meshfree faces (the load term of the
+     * Assembler) and the unit-stress residual d^k they use.
+     */
+    ParticleLoads<dim> particle_loads;
+    /** Views of particle_loads for setup() and view(). */
+    const bool traction_from_test_functions =
+      particle_loads.traction_from_test_functions();
+    const bool traction_from_exact_stress =
+      particle_loads.traction_from_exact_stress();
+    const std::vector<Tensor<1, dim>> &unit_stress =
+      particle_loads.unit_stress();
+    const std::vector<std::map<types::boundary_id, double>>
+      &boundary_area_weights = particle_loads.boundary_area_weights();
     /** The element groups and the assembler over them (set up in setup()). */
     std::unique_ptr<Q1CellGroup<dim>>  q1_cells;
     std::unique_ptr<ElementGroup<dim>> family_group;
@@ -439,14 +416,26 @@ namespace pg
     , formulation(parse_formulation_code(parameters.discretization.formulation))
     , material(Materials::create_material<dim>(parameters.material))
     , discretization(mpi_communicator, parameters.geometry)
-    , traction_from_test_functions(
-        parameters.boundary_conditions.particle_traction_area ==
-          "test functions" ||
-        (parameters.boundary_conditions.particle_traction_area == "automatic" &&
-         formulation.variational_consistency))
-    , traction_from_exact_stress(
-        parameters.boundary_conditions.particle_traction_area == "exact stress")
     , loads(parameters)
+    , particle_loads(
+        parameters,
+        formulation,
+        loads,
+        particles,
+        owned_families,
+        owned_meshfree_neumann_cells,
+        [this](const unsigned int k) {
+          // 'exact stress': the internal force of P(I + grad u_exact)
+          const auto exact_stress = [this](const Point<dim> &X) {
+            return material->first_piola_stress(
+              unit_symmetric_tensor<dim>() +
+              Postprocess::exact_displacement_gradient(prm, mesh_diameter, X));
+          };
+          return particle_stress_force<dim>(families,
+                                            *family_elements,
+                                            k,
+                                            exact_stress);
+        })
   {
     AssertThrow(!(parameters.linear_solver.type == "cg" &&
                   (formulation.method == FormulationCode::Method::ppg1 ||
@@ -578,14 +567,9 @@ namespace pg
   void
   Problem<dim>::Implementation::compute_unit_stress_residual()
   {
-    unit_stress = unit_stress_residual(families,
-                                       owned_families,
-                                       family_tables,
-                                       particles.n_particles(),
-                                       comm);
+    particle_loads.compute_unit_stress_residual(families, family_tables, comm);
     summary.max_interior_unit_stress_residual =
-      max_interior_unit_stress_residual(particles, unit_stress);
-    boundary_area_weights = pg::boundary_area_weights(particles, unit_stress);
+      particle_loads.max_interior_unit_stress_residual();
   }
 
 
@@ -597,43 +581,22 @@ namespace pg
     if (!correction_system)
       correction_system =
         std::make_unique<CorrectionSystem<dim>>(formulation, comm);
-    correction_system->reinit(particles,
-                              families,
-                              *family_elements,
-                              owned_families,
-                              owned_dofs);
     const CorrectionFactors<dim> factors =
-      correction_system->solve(unit_stress);
+      correct_family_tables(*correction_system,
+                            particles,
+                            families,
+                            *family_elements,
+                            owned_families,
+                            owned_dofs,
+                            unit_stress,
+                            family_tables);
     if (formulation.second_order_consistency)
       summary.max_interior_second_order_residual =
         factors.max_second_order_residual;
     // The size of the correction, relative to the gradients (~1/h): large
     // values mean strongly modified test functions.
     summary.max_correction_factor = factors.max_scaled_factor(particles);
-    family_elements->set_correction_factors(factors.alpha,
-                                            factors.second_order_alpha);
-    for (unsigned int f = 0; f < owned_families.size(); ++f)
-      family_elements->build(owned_families[f], family_tables[f]);
     compute_unit_stress_residual();
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::set_load_factor(const double t) const
-  {
-    // ParsedFunction::set_time() is the only thing that changes the
-    // parameters during a run, so it is done here, in one place.
-    for (const Functions::ParsedFunction<dim> *function :
-         {&prm.prescribed_displacement,
-          &prm.traction,
-          &prm.boundary_stress,
-          &prm.body_force,
-          &prm.exact_solution})
-      const_cast<Functions::ParsedFunction<dim> *>(function)->set_time(t);
-    if (prm.exact_gradient)
-      prm.exact_gradient->set_time(t);
   }
 
 
@@ -650,47 +613,15 @@ namespace pg
 
 
   template <int dim>
-  bool
-  Problem<dim>::Implementation::is_neumann(const types::boundary_id id) const
-  {
-    return loads.is_neumann(id);
-  }
-
-
-
-  template <int dim>
-  Tensor<1, dim>
-  Problem<dim>::Implementation::prescribed_traction(
-    const types::boundary_id id,
-    const Point<dim>        &point,
-    const Tensor<1, dim>    &normal) const
-  {
-    return loads.prescribed_traction(id, point, normal);
-  }
-
-
-
-  template <int dim>
-  bool
-  Problem<dim>::Implementation::has_neumann_face(
-    const typename DoFHandler<dim>::active_cell_iterator &cell) const
-  {
-    return loads.has_neumann_face(cell);
-  }
-
-
-
-  template <int dim>
   void
   Problem<dim>::Implementation::assemble(const bool with_matrix)
   {
     Timer timer;
-    failure =
-      assembler->assemble(u_full,
-                          with_matrix ? &matrix : nullptr,
-                          rhs,
-                          force,
-                          [this](Assembler<dim> &a) { add_particle_loads(a); });
+    failure    = assembler->assemble(u_full,
+                                  with_matrix ? &matrix : nullptr,
+                                  rhs,
+                                  force,
+                                  particle_loads.load_term());
     auto &cost = summary.assembly_cost;
     if (with_matrix)
       {
@@ -699,92 +630,6 @@ namespace pg
         cost.family_seconds = assembler->tangent_seconds()[1];
       }
     time_assembly += timer.wall_time();
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::Implementation::add_particle_loads(
-    Assembler<dim> &assembler) const
-  {
-    // Particle loads: the body force V^k rho_0 b and, with tractions through
-    // the test functions, T_b c_b with c_b the area of boundary part b in
-    // the unit-stress residual d^k (section 8.2, eqs. 4.32-4.35).
-    Vector<double>                       f(dim), local(dim);
-    std::vector<types::global_dof_index> dofs(dim);
-    for (const unsigned int k : owned_families)
-      {
-        local = 0;
-        if (traction_from_exact_stress && !particles.on_interface(k) &&
-            std::any_of(particles.boundary_area_vectors(k).begin(),
-                        particles.boundary_area_vectors(k).end(),
-                        [&](const auto &area) {
-                          return is_neumann(area.first);
-                        }))
-          {
-            // the surface load plus the body force: the whole internal
-            // force of the exact stress
-            const Tensor<1, dim> force = exact_stress_force(k);
-            for (unsigned int c = 0; c < dim; ++c)
-              local(c) = force[c];
-          }
-        else
-          {
-            loads.body_force(particles.position(k), f);
-            for (unsigned int c = 0; c < dim; ++c)
-              local(c) += particles.volume(k) * f(c);
-          }
-        if (traction_from_test_functions)
-          for (const auto &[id, area] : particles.boundary_area_vectors(k))
-            if (is_neumann(id))
-              {
-                const Tensor<1, dim> t =
-                  prescribed_traction(id,
-                                      particles.position(k),
-                                      area / area.norm());
-                // On the FE/meshfree interface the VC targets d^k are the
-                // geometric area vectors (interface plus surface part), so
-                // the consistent load there is the geometric one.
-                const double a = particles.on_interface(k) ?
-                                   area.norm() :
-                                   boundary_area_weights[k].at(id);
-                for (unsigned int c = 0; c < dim; ++c)
-                  local(c) += a * t[c];
-              }
-        if (!all_finite(local))
-          assembler.record_failure(Assembler<dim>::non_finite_message(
-            "the load of particle " + std::to_string(k),
-            particles.position(k),
-            "Check the 'Traction' and 'Body force' functions."));
-        for (unsigned int c = 0; c < dim; ++c)
-          dofs[c] = particles.dof(k, c);
-        assembler.add_load(local, dofs);
-      }
-    // 'geometry': the FE-consistent load on the meshfree boundary faces.
-    if (owned_meshfree_neumann_cells.empty())
-      return;
-    FEFaceValues<dim> fe_face_values(fe_scalar,
-                                     QGauss<dim - 1>(2),
-                                     update_values | update_quadrature_points |
-                                       update_normal_vectors |
-                                       update_JxW_values);
-    LocalSystem       local_system;
-    local_system.with_matrix = false;
-    for (const auto &cell : owned_meshfree_neumann_cells)
-      {
-        local_system.dofs.resize(fe.n_dofs_per_cell());
-        cell->get_dof_indices(local_system.dofs);
-        local_system.residual.reinit(local_system.dofs.size());
-        loads.add_face_tractions(cell, fe_face_values, local_system.residual);
-        if (!all_finite(local_system.residual))
-          assembler.record_failure(Assembler<dim>::non_finite_message(
-            "the traction on meshfree cell " +
-              std::to_string(cell->active_cell_index()),
-            cell->center(),
-            "Check the 'Traction' function."));
-        assembler.distribute(local_system);
-      }
   }
 
 
@@ -930,46 +775,6 @@ namespace pg
     const std::vector<Tensor<2, dim>> &particle_F)
   {
     Postprocess::NodalStresses<dim>::write(view(), particle_F, summary);
-  }
-
-
-
-  template <int dim>
-  Tensor<2, dim>
-  Problem<dim>::Implementation::exact_displacement_gradient(
-    const Point<dim> &p) const
-  {
-    return Postprocess::exact_displacement_gradient(prm, mesh_diameter, p);
-  }
-
-
-
-  template <int dim>
-  Tensor<1, dim>
-  Problem<dim>::Implementation::exact_stress_force(const unsigned int k) const
-  {
-    // Families are pairwise: the families containing k are those of the
-    // members of family k.
-    Tensor<1, dim>       force;
-    QuadratureTable<dim> table;
-    for (const unsigned int e : families.members(k))
-      {
-        family_elements->build(e, table);
-        const auto members = families.members(e);
-        const auto found   = std::find(members.begin(), members.end(), k);
-        Assert(found != members.end(), ExcInternalError());
-        std::vector<Tensor<1, dim>> local(members.size());
-        add_stress_residual<dim>(
-          table,
-          [&](const unsigned int q) {
-            return material->first_piola_stress(
-              unit_symmetric_tensor<dim>() +
-              exact_displacement_gradient(table.points[q]));
-          },
-          local);
-        force += local[found - members.begin()];
-      }
-    return force;
   }
 
 

@@ -215,6 +215,25 @@ namespace pg
 
 
 
+    template <int dim>
+    void
+    AllParameters<dim>::set_load_factor(const double t) const
+    {
+      // ParsedFunction::set_time() is the only thing that changes the
+      // parameters during a run, so it is done here, in one place.
+      for (const Functions::ParsedFunction<dim> *function :
+           {&prescribed_displacement,
+            &traction,
+            &boundary_stress,
+            &body_force,
+            &exact_solution})
+        const_cast<Functions::ParsedFunction<dim> *>(function)->set_time(t);
+      if (exact_gradient)
+        exact_gradient->set_time(t);
+    }
+
+
+
     unsigned int
     read_dimension(const std::string &filename)
     {

@@ -421,8 +421,48 @@ namespace pg
 
 
 
+  template <int dim>
+  CorrectionFactors<dim>
+  correct_family_tables(CorrectionSystem<dim>             &system,
+                        const ParticleSet<dim>            &particles,
+                        const FamilySet<dim>              &families,
+                        FamilyElements<dim>               &elements,
+                        const std::vector<unsigned int>   &owned_families,
+                        const IndexSet                    &owned_dofs,
+                        const std::vector<Tensor<1, dim>> &unit_stress,
+                        std::vector<QuadratureTable<dim>> &tables)
+  {
+    AssertDimension(tables.size(), owned_families.size());
+    system.reinit(particles, families, elements, owned_families, owned_dofs);
+    CorrectionFactors<dim> factors = system.solve(unit_stress);
+    elements.set_correction_factors(factors.alpha, factors.second_order_alpha);
+    for (unsigned int f = 0; f < owned_families.size(); ++f)
+      elements.build(owned_families[f], tables[f]);
+    return factors;
+  }
+
+
+
   template struct CorrectionFactors<2>;
   template struct CorrectionFactors<3>;
   template class CorrectionSystem<2>;
   template class CorrectionSystem<3>;
+  template CorrectionFactors<2>
+  correct_family_tables(CorrectionSystem<2> &,
+                        const ParticleSet<2> &,
+                        const FamilySet<2> &,
+                        FamilyElements<2> &,
+                        const std::vector<unsigned int> &,
+                        const IndexSet &,
+                        const std::vector<Tensor<1, 2>> &,
+                        std::vector<QuadratureTable<2>> &);
+  template CorrectionFactors<3>
+  correct_family_tables(CorrectionSystem<3> &,
+                        const ParticleSet<3> &,
+                        const FamilySet<3> &,
+                        FamilyElements<3> &,
+                        const std::vector<unsigned int> &,
+                        const IndexSet &,
+                        const std::vector<Tensor<1, 3>> &,
+                        std::vector<QuadratureTable<3>> &);
 } // namespace pg

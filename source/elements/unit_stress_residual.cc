@@ -106,6 +106,34 @@ namespace pg
 
 
 
+  template <int dim>
+  Tensor<1, dim>
+  particle_stress_force(
+    const FamilySet<dim>                                    &families,
+    const FamilyElements<dim>                               &elements,
+    const unsigned int                                       k,
+    const std::function<Tensor<2, dim>(const Point<dim> &)> &stress)
+  {
+    Tensor<1, dim>       force;
+    QuadratureTable<dim> table;
+    for (const unsigned int e : families.members(k))
+      {
+        elements.build(e, table);
+        const auto members = families.members(e);
+        const auto found   = std::find(members.begin(), members.end(), k);
+        Assert(found != members.end(), ExcInternalError());
+        std::vector<Tensor<1, dim>> local(members.size());
+        add_stress_residual<dim>(
+          table,
+          [&](const unsigned int q) { return stress(table.points[q]); },
+          local);
+        force += local[found - members.begin()];
+      }
+    return force;
+  }
+
+
+
   template std::vector<Tensor<1, 2>>
   unit_stress_residual<2>(const FamilySet<2> &,
                           const std::vector<unsigned int> &,
@@ -130,4 +158,16 @@ namespace pg
   template std::vector<std::map<types::boundary_id, double>>
   boundary_area_weights<3>(const ParticleSet<3> &,
                            const std::vector<Tensor<1, 3>> &);
+  template Tensor<1, 2>
+  particle_stress_force<2>(
+    const FamilySet<2> &,
+    const FamilyElements<2> &,
+    const unsigned int,
+    const std::function<Tensor<2, 2>(const Point<2> &)> &);
+  template Tensor<1, 3>
+  particle_stress_force<3>(
+    const FamilySet<3> &,
+    const FamilyElements<3> &,
+    const unsigned int,
+    const std::function<Tensor<2, 3>(const Point<3> &)> &);
 } // namespace pg

@@ -90,6 +90,14 @@ namespace pg
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
+
+      /**
+       * Set the time of every parsed function of the loads, the Dirichlet
+       * values and the exact solution (and gradient) to the load factor
+       * @p t (or the time of a dynamic run).
+       */
+      void
+      set_load_factor(const double t) const;
     };
 
     /**

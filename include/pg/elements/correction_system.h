@@ -5,6 +5,7 @@
 #include <pg/base/global.h>
 #include <pg/base/linear_algebra.h>
 #include <pg/elements/family_elements.h>
+#include <pg/elements/quadrature_table.h>
 #include <pg/families/family_set.h>
 #include <pg/mesh/particle_set.h>
 
@@ -148,6 +149,29 @@ namespace pg
     LinearAlgebra::SparseMatrix matrix;
     LinearAlgebra::Vector       rhs, solution;
   };
+
+
+
+  /**
+   * The VC (or VC2) correction of the family tables (pg-methods.md
+   * sections 11.4-11.7): reinit @p system on the families @p owned_families
+   * of this rank (with its DoFs @p owned_dofs), solve it for the
+   * uncorrected unit-stress residual @p unit_stress d^k(0), hand the
+   * factors to @p elements (PBG: test = trial corrected) and rebuild
+   * @p tables (tables[i] of family owned_families[i]) with them. Returns
+   * the factors, for their statistics; d^k of the new tables is then
+   * round-off at interior particles.
+   */
+  template <int dim>
+  CorrectionFactors<dim>
+  correct_family_tables(CorrectionSystem<dim>             &system,
+                        const ParticleSet<dim>            &particles,
+                        const FamilySet<dim>              &families,
+                        FamilyElements<dim>               &elements,
+                        const std::vector<unsigned int>   &owned_families,
+                        const IndexSet                    &owned_dofs,
+                        const std::vector<Tensor<1, dim>> &unit_stress,
+                        std::vector<QuadratureTable<dim>> &tables);
 } // namespace pg
 
 #endif

@@ -2,14 +2,17 @@
 #define pg_elements_unit_stress_residual_h
 
 #include <pg/base/global.h>
+#include <pg/elements/family_elements.h>
 #include <pg/elements/quadrature_table.h>
 #include <pg/families/family_set.h>
 #include <pg/mesh/particle_set.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -56,6 +59,22 @@ namespace pg
   std::vector<std::map<types::boundary_id, double>>
   boundary_area_weights(const ParticleSet<dim>            &particles,
                         const std::vector<Tensor<1, dim>> &unit_stress);
+
+  /**
+   * The internal force (force units) at particle @p k of the stress field
+   * @p stress P(X) (first Piola-Kirchhoff, force per reference area):
+   * sum over the families e containing k of sum_q w_q P(X_q) T^{qk}, with
+   * the tables of @p elements (built here). Families are pairwise, so the
+   * families containing k are those of the members of family k. With the
+   * exact stress it is the 'Particle traction area = exact stress' load.
+   */
+  template <int dim>
+  Tensor<1, dim>
+  particle_stress_force(
+    const FamilySet<dim>                                    &families,
+    const FamilyElements<dim>                               &elements,
+    const unsigned int                                       k,
+    const std::function<Tensor<2, dim>(const Point<dim> &)> &stress);
 } // namespace pg
 
 #endif
