@@ -1,0 +1,304 @@
+#ifndef pg_solvers_discrete_system_h
+#define pg_solvers_discrete_system_h
+
+#include <pg/assembly/assembler.h>
+#include <pg/assembly/loads.h>
+#include <pg/assembly/particle_loads.h>
+#include <pg/base/formulation_code.h>
+#include <pg/base/global.h>
+#include <pg/base/linear_algebra.h>
+#include <pg/base/parameters.h>
+#include <pg/dofs/discretization.h>
+#include <pg/elements/correction_system.h>
+#include <pg/elements/element_group.h>
+#include <pg/elements/q1_cell_group.h>
+#include <pg/history/quadrature_point_history.h>
+#include <pg/materials/material.h>
+#include <pg/solvers/mechanical_system.h>
+#include <pg/solvers/newton_solver.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <string>
+
+namespace pg
+{
+  struct RunSummary;
+
+  /**
+   * The discrete mechanical system of a run on a Discretization: the
+   * constraints (Dirichlet and symmetry, and their homogeneous version of
+   * the Newton update), the tangent K, the vectors u, du, R = -(f_int -
+   * f_ext) and f_int - f_ext, the loads (Loads, ParticleLoads), the
+   * element groups (Q1 cells, then the families or the CPD interactions)
+   * with their Assembler, the material state at their evaluation points
+   * (QuadraturePointHistory) and the VC correction of the family tables
+   * (CorrectionSystem). It implements the MechanicalSystem of the time
+   * integrators and the analyses, and the Newton load step of the static
+   * analysis (solve_step()).
+   *
+   * The members are public data, as in Discretization: the problem wires
+   * them into the ProblemView and the analyses. It records the sizes, the
+   * assembly counts and the Newton residuals into the RunSummary it is
+   * given; the wall times (s) of the VC correction, the assemblies and
+   * the linear solves are time_vc, time_assembly and time_solve.
+   *
+   * The discretization is not const: the VC correction rebuilds its
+   * family_elements and family_tables (correct_variational_consistency()).
+   */
+  template <int dim>
+  class DiscreteSystem : public MechanicalSystem
+  {
+  public:
+    using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
+
+    /**
+     * The system of @p parameters, @p formulation and @p material on
+     * @p discretization (set up later: setup()); messages go to @p pcout,
+     * the counts to @p summary. Checks that the linear solver can solve
+     * the tangents of the formulation (no CG for PPG).
+     */
+    DiscreteSystem(const Parameters::AllParameters<dim> &parameters,
+                   const MPI_Comm                        mpi_communicator,
+                   const ConditionalOStream             &pcout,
+                   const FormulationCode                &formulation,
+                   const Materials::Material<dim>       &material,
+                   Discretization<dim>                  &discretization,
+                   RunSummary                           &summary);
+
+    /**
+     * Is the meshfree @p cell loaded by FE-consistent face tractions (the
+     * 'geometry' particle traction area and a Neumann face)? The argument
+     * of Discretization::reinit().
+     */
+    bool
+    loaded_by_face_traction(const CellIterator &cell) const;
+
+    /**
+     * After Discretization::reinit(): d^k, the constraints, the element
+     * groups and the assembler, the sparsity and the tangent, the VC
+     * correction (VC codes with particles), the vectors and the material
+     * state at the evaluation points.
+     */
+    void
+    setup();
+
+    /**
+     * Dirichlet and symmetry constraints; the Dirichlet values are those
+     * of the current load factor (set_load_factor), or zero if
+     * @p homogeneous.
+     */
+    void
+    make_constraints(AffineConstraints<double> &c,
+                     const bool                 homogeneous) const;
+
+    void
+    assemble(const bool with_matrix);
+
+    /** One load (sub)step to load factor @p t; returns success. */
+    bool
+    solve_step(const double t, unsigned int &iterations);
+    /**
+     * Solve matrix * update = rhs and add the update (with the homogeneous
+     * constraints) to the solution, with @p energy = update . rhs; false,
+     * with a message, if the linear solver does not converge.
+     */
+    bool
+    apply_newton_update(double &energy);
+
+    /**
+     * Newton's operations on the static residual: assemble (failures
+     * reduced over the ranks), |R|, solve and update.
+     */
+    NewtonSolver::Operations
+    newton_operations() override;
+
+    /** @name The MechanicalSystem of the time integrators */
+    /** @{ */
+    MPI_Comm
+    communicator() const override
+    {
+      return comm;
+    }
+
+    const IndexSet &
+    locally_owned_dofs() const override
+    {
+      return discretization.owned_dofs;
+    }
+
+    LinearAlgebra::Vector &
+    displacement() override
+    {
+      return solution_owned;
+    }
+
+    void
+    displacement_changed() override
+    {
+      update_full_solution();
+    }
+
+    void
+    set_time(const double t) override
+    {
+      set_load_factor(t);
+      if (prm.boundary_conditions.prescribes_values())
+        make_constraints(constraints, false);
+    }
+
+    void
+    apply_dirichlet_values() override
+    {
+      constraints.distribute(solution_owned);
+    }
+
+    const AffineConstraints<double> &
+    homogeneous_constraints() const override
+    {
+      return zero_constraints;
+    }
+
+    std::string
+    assemble_residual(const bool with_matrix) override
+    {
+      assemble(with_matrix);
+      return failure;
+    }
+
+    LinearAlgebra::Vector &
+    residual() override
+    {
+      return rhs;
+    }
+
+    const LinearAlgebra::Vector &
+    unbalanced_force() const override
+    {
+      return force;
+    }
+
+    LinearAlgebra::SparseMatrix &
+    tangent() override
+    {
+      return matrix;
+    }
+
+    void
+    external_force(LinearAlgebra::Vector &f_ext) override
+    {
+      compute_external_force(f_ext);
+    }
+
+    void
+    solve(const LinearAlgebra::SparseMatrix &A,
+          LinearAlgebra::Vector             &x,
+          const LinearAlgebra::Vector       &b) override;
+    /** @} */
+
+    void
+    update_full_solution();
+
+    /**
+     * d^k of every particle from the current family tables (summed over
+     * all ranks), the largest interior value for the summary and the
+     * boundary-area weights of the Neumann loads (ParticleLoads).
+     */
+    void
+    compute_unit_stress_residual();
+
+    /**
+     * Build and solve the VC (or VC2) system (pg-methods.md sections
+     * 11.4-11.7) in correction_system, hand the factors to the family
+     * elements (PBG: test = trial corrected), record max |alpha^k| h,
+     * rebuild the family tables and d^k (correct_family_tables()).
+     */
+    void
+    correct_variational_consistency();
+
+    /** Set the time of every parsed function to the load factor @p t. */
+    void
+    set_load_factor(const double t) const
+    {
+      prm.set_load_factor(t);
+    }
+
+    /** Is @p id in 'Neumann' or in 'Neumann stress'? */
+    bool
+    is_neumann(const types::boundary_id id) const
+    {
+      return loads.is_neumann(id);
+    }
+
+    bool
+    has_neumann_face(const CellIterator &cell) const
+    {
+      return loads.has_neumann_face(cell);
+    }
+
+    /**
+     * f_ext at the time of the parsed functions: the loads are dead, so
+     * f_ext = -(f_int - f_ext)(u = 0), one residual assembly (none without
+     * body force and Neumann boundaries). Overwrites rhs and force.
+     */
+    void
+    compute_external_force(LinearAlgebra::Vector &f_ext);
+
+    /** @p target += @p factor C^T y with C of zero_constraints. */
+    void
+    add_condensed(const LinearAlgebra::Vector &y,
+                  const double                 factor,
+                  LinearAlgebra::Vector       &target) const override;
+
+    const Parameters::AllParameters<dim> &prm;
+    const MPI_Comm                        comm;
+    const ConditionalOStream             &pcout;
+    const FormulationCode                &formulation;
+    const Materials::Material<dim>       &material;
+    /** Mesh, DoFs, particles, families and tables (set up before setup()). */
+    Discretization<dim> &discretization;
+    /** Sizes, assembly counts, Newton residuals and VC measures. */
+    RunSummary &summary;
+
+    AffineConstraints<double>   constraints, zero_constraints;
+    LinearAlgebra::SparseMatrix matrix;
+    LinearAlgebra::Vector       solution, solution_owned;
+    LinearAlgebra::Vector       update, rhs, force;
+    Vector<double>              u_full;
+
+    /** The VC system, with its own matrix (VC codes only). */
+    std::unique_ptr<CorrectionSystem<dim>> correction_system;
+
+    /** The dead loads of 'Boundary conditions' and the body force. */
+    const Loads<dim> loads;
+    /**
+     * The loads on the particles and meshfree faces (the load term of the
+     * Assembler) and the unit-stress residual d^k they use.
+     */
+    ParticleLoads<dim> particle_loads;
+    /** The element groups and the assembler over them (set up in setup()). */
+    std::unique_ptr<Q1CellGroup<dim>>  q1_cells;
+    std::unique_ptr<ElementGroup<dim>> family_group;
+    std::unique_ptr<Assembler<dim>>    assembler;
+    /**
+     * The material state at the groups' evaluation points: committed after
+     * every accepted (sub)step, reverted after a cut.
+     */
+    QuadraturePointHistory history;
+
+    /** The first failure of the last assembly on this rank (or empty). */
+    std::string failure;
+    /** Why the last failed (sub)step failed, for the final message. */
+    std::string last_failure;
+
+    /** Wall times (s) of the phases, reported in summary.json. */
+    double time_vc = 0, time_assembly = 0, time_solve = 0;
+  };
+} // namespace pg
+
+#endif

@@ -1,0 +1,368 @@
+#include <pg/base/exceptions.h>
+#include <pg/constraints/boundary_constraints.h>
+#include <pg/elements/family_group.h>
+#include <pg/elements/unit_stress_residual.h>
+#include <pg/postprocess/problem_view.h>
+#include <pg/problem.h>
+#include <pg/solvers/discrete_system.h>
+#include <pg/solvers/linear_solver.h>
+
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+namespace pg
+{
+  template <int dim>
+  DiscreteSystem<dim>::DiscreteSystem(
+    const Parameters::AllParameters<dim> &parameters,
+    const MPI_Comm                        mpi_communicator,
+    const ConditionalOStream             &pcout,
+    const FormulationCode                &formulation,
+    const Materials::Material<dim>       &material,
+    Discretization<dim>                  &discretization,
+    RunSummary                           &summary)
+    : prm(parameters)
+    , comm(mpi_communicator)
+    , pcout(pcout)
+    , formulation(formulation)
+    , material(material)
+    , discretization(discretization)
+    , summary(summary)
+    , loads(parameters)
+    , particle_loads(parameters,
+                     formulation,
+                     loads,
+                     discretization.particles,
+                     discretization.owned_families,
+                     discretization.owned_meshfree_neumann_cells,
+                     [this](const unsigned int k) {
+                       // 'exact stress': the internal force of P(I + grad
+                       // u_exact)
+                       const auto exact_stress = [this](const Point<dim> &X) {
+                         return this->material.first_piola_stress(
+                           unit_symmetric_tensor<dim>() +
+                           Postprocess::exact_displacement_gradient(
+                             prm,
+                             this->discretization.mesh_diameter,
+                             X));
+                       };
+                       return particle_stress_force<dim>(
+                         this->discretization.families,
+                         *this->discretization.family_elements,
+                         k,
+                         exact_stress);
+                     })
+  {
+    AssertThrow(!(parameters.linear_solver.type == "cg" &&
+                  (formulation.method == FormulationCode::Method::ppg1 ||
+                   formulation.method == FormulationCode::Method::ppg2)),
+                ExcBadParameter("Linear solver/Type",
+                                "cg",
+                                "PPG tangents are not symmetric, so CG cannot "
+                                "solve them; use 'gmres' or 'direct'."));
+  }
+
+
+
+  template <int dim>
+  bool
+  DiscreteSystem<dim>::loaded_by_face_traction(const CellIterator &cell) const
+  {
+    return !particle_loads.traction_from_test_functions() &&
+           !particle_loads.traction_from_exact_stress() &&
+           loads.has_neumann_face(cell);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::setup()
+  {
+    const auto &particles     = discretization.particles;
+    const auto &owned_dofs    = discretization.owned_dofs;
+    const auto &relevant_dofs = discretization.relevant_dofs;
+
+    compute_unit_stress_residual();
+
+    make_constraints(constraints, false);
+    make_constraints(zero_constraints, true);
+
+    // The element groups: Q1 cells first, then the families (PG or CPD).
+    q1_cells = std::make_unique<Q1CellGroup<dim>>(discretization.owned_fe_cells,
+                                                  material,
+                                                  loads);
+    if (discretization.cpd)
+      family_group =
+        std::make_unique<CpdGroup<dim>>(discretization.owned_families,
+                                        discretization.families,
+                                        particles,
+                                        *discretization.cpd);
+    else
+      family_group =
+        std::make_unique<FamilyGroup<dim>>(discretization.owned_families,
+                                           discretization.families,
+                                           particles,
+                                           discretization.family_tables,
+                                           material);
+    assembler = std::make_unique<Assembler<dim>>(
+      zero_constraints,
+      std::vector<ElementGroup<dim> *>{q1_cells.get(), family_group.get()});
+
+    DynamicSparsityPattern dsp(relevant_dofs);
+    assembler->add_sparsity(dsp);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               owned_dofs,
+                                               comm,
+                                               relevant_dofs);
+    matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
+    summary.matrix_nonzeros = matrix.n_nonzero_elements();
+    rhs.reinit(owned_dofs, comm);
+    update.reinit(owned_dofs, comm);
+    if (formulation.variational_consistency && particles.n_particles() > 0)
+      {
+        Timer vc_timer;
+        correct_variational_consistency();
+        time_vc += vc_timer.wall_time();
+      }
+
+    solution.reinit(owned_dofs, relevant_dofs, comm);
+    solution_owned.reinit(owned_dofs, comm);
+    force.reinit(owned_dofs, comm);
+    u_full.reinit(discretization.dof_handler.n_dofs());
+
+    // The state at every evaluation point of every group (the tables are
+    // final now: the VC correction keeps their points).
+    history.reinit(assembler->evaluation_points(),
+                   material.n_state_variables(),
+                   [this](const ArrayView<double> &state) {
+                     material.initialize_state(state);
+                   });
+    assembler->set_history(&history);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::make_constraints(AffineConstraints<double> &c,
+                                        const bool homogeneous) const
+  {
+    BoundaryConstraints<dim>(discretization.dof_handler,
+                             prm.boundary_conditions,
+                             prm.prescribed_displacement,
+                             discretization.mesh_diameter)
+      .make(discretization.relevant_dofs, homogeneous, c);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::compute_unit_stress_residual()
+  {
+    particle_loads.compute_unit_stress_residual(discretization.families,
+                                                discretization.family_tables,
+                                                comm);
+    summary.max_interior_unit_stress_residual =
+      particle_loads.max_interior_unit_stress_residual();
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::correct_variational_consistency()
+  {
+    if (!correction_system)
+      correction_system =
+        std::make_unique<CorrectionSystem<dim>>(formulation, comm);
+    const CorrectionFactors<dim> factors =
+      correct_family_tables(*correction_system,
+                            discretization.particles,
+                            discretization.families,
+                            *discretization.family_elements,
+                            discretization.owned_families,
+                            discretization.owned_dofs,
+                            particle_loads.unit_stress(),
+                            discretization.family_tables);
+    if (formulation.second_order_consistency)
+      summary.max_interior_second_order_residual =
+        factors.max_second_order_residual;
+    // The size of the correction, relative to the gradients (~1/h): large
+    // values mean strongly modified test functions.
+    summary.max_correction_factor =
+      factors.max_scaled_factor(discretization.particles);
+    compute_unit_stress_residual();
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::update_full_solution()
+  {
+    solution = solution_owned;
+    for (types::global_dof_index i = 0; i < u_full.size(); ++i)
+      u_full[i] = solution[i];
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::assemble(const bool with_matrix)
+  {
+    Timer timer;
+    failure    = assembler->assemble(u_full,
+                                  with_matrix ? &matrix : nullptr,
+                                  rhs,
+                                  force,
+                                  particle_loads.load_term());
+    auto &cost = summary.assembly_cost;
+    if (with_matrix)
+      {
+        ++cost.n_assemblies;
+        cost.fe_seconds     = assembler->tangent_seconds()[0];
+        cost.family_seconds = assembler->tangent_seconds()[1];
+      }
+    time_assembly += timer.wall_time();
+  }
+
+
+
+  template <int dim>
+  NewtonSolver::Operations
+  DiscreteSystem<dim>::newton_operations()
+  {
+    NewtonSolver::Operations operations;
+    operations.assemble = [this]() -> std::string {
+      assemble(true);
+      if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) == 0)
+        return "";
+      return failure.empty() ? "the assembly failed on another rank" : failure;
+    };
+    operations.residual_norm    = [this]() { return rhs.l2_norm(); };
+    operations.solve_and_update = [this](double &energy) {
+      return apply_newton_update(energy);
+    };
+    return operations;
+  }
+
+
+
+  template <int dim>
+  bool
+  DiscreteSystem<dim>::solve_step(const double t, unsigned int &iterations)
+  {
+    set_load_factor(t);
+    make_constraints(constraints, false);
+    constraints.distribute(solution_owned);
+    update_full_solution();
+    last_failure.clear();
+
+    const NewtonSolver::Result result =
+      NewtonSolver(prm.newton).solve(newton_operations());
+    summary.newton_residuals_last_step = result.residuals;
+    iterations                         = result.updates;
+    last_failure                       = result.failure;
+    NewtonSolver::report(result, pcout);
+    if (result.converged())
+      summary.newton_residuals.push_back(result.residuals);
+    return result.converged();
+  }
+
+
+
+  template <int dim>
+  bool
+  DiscreteSystem<dim>::apply_newton_update(double &energy)
+  {
+    Timer timer;
+    update = 0;
+    try
+      {
+        solve_linear_system(prm.linear_solver,
+                            discretization.dof_handler,
+                            matrix,
+                            update,
+                            rhs);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        time_solve += timer.wall_time();
+        pcout << "    linear solver did not converge in " << e.last_step
+              << " iterations" << std::endl;
+        return false;
+      }
+    time_solve += timer.wall_time();
+    ++summary.assembly_cost.n_solves;
+    zero_constraints.distribute(update);
+    energy = update * rhs;
+    solution_owned += update;
+    update_full_solution();
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::solve(const LinearAlgebra::SparseMatrix &A,
+                             LinearAlgebra::Vector             &x,
+                             const LinearAlgebra::Vector       &b)
+  {
+    solve_linear_system(prm.linear_solver, discretization.dof_handler, A, x, b);
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::compute_external_force(LinearAlgebra::Vector &f_ext)
+  {
+    f_ext.reinit(discretization.owned_dofs, comm);
+    const auto &bc = prm.boundary_conditions;
+    if (prm.zero_body_force && bc.neumann.empty() && bc.neumann_stress.empty())
+      return;
+    const Vector<double> u_saved = u_full;
+    u_full                       = 0;
+    assemble(false);
+    u_full = u_saved;
+    AssertThrow(failure.empty(), ExcMessage(failure));
+    f_ext = force;
+    f_ext *= -1.;
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::add_condensed(const LinearAlgebra::Vector &y,
+                                     const double                 factor,
+                                     LinearAlgebra::Vector       &target) const
+  {
+    const auto           &owned_dofs = discretization.owned_dofs;
+    LinearAlgebra::Vector ghosted(owned_dofs,
+                                  discretization.relevant_dofs,
+                                  comm);
+    ghosted = y;
+    LinearAlgebra::Vector z(owned_dofs, comm);
+    for (const auto j : owned_dofs)
+      if (!zero_constraints.is_constrained(j))
+        z(j) = ghosted(j);
+    for (const auto &line : zero_constraints.get_lines())
+      for (const auto &[j, c] : line.entries)
+        if (owned_dofs.is_element(j))
+          z(j) += c * ghosted(line.index);
+    z.compress(VectorOperation::insert);
+    target.add(factor, z);
+  }
+
+
+
+  template class DiscreteSystem<2>;
+  template class DiscreteSystem<3>;
+} // namespace pg
