@@ -3,6 +3,7 @@
 #include <pg/analysis/eigenmode_analysis.h>
 #include <pg/analysis/inf_sup_analysis.h>
 #include <pg/analysis/static_analysis.h>
+#include <pg/base/exceptions.h>
 #include <pg/base/formulation_code.h>
 #include <pg/dofs/discretization.h>
 #include <pg/materials/material.h>
