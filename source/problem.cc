@@ -7,6 +7,7 @@
 #include <pg/base/formulation_code.h>
 #include <pg/base/linear_algebra.h>
 #include <pg/constraints/boundary_constraints.h>
+#include <pg/dofs/relevant_dofs.h>
 #include <pg/elements/correction_system.h>
 #include <pg/elements/cpd_interactions.h>
 #include <pg/elements/element_group.h>
@@ -397,9 +398,13 @@ namespace pg
     IndexSet                    owned_dofs, relevant_dofs;
     AffineConstraints<double>   constraints, zero_constraints;
     LinearAlgebra::SparseMatrix matrix;
-    LinearAlgebra::Vector       solution, solution_owned, converged_solution;
-    LinearAlgebra::Vector       update, rhs, force;
-    Vector<double>              u_full;
+    /**
+     * solution is ghosted over relevant_dofs (what the assembly and the
+     * postprocessors read); solution_owned holds the owned DoFs that the
+     * Newton updates change.
+     */
+    LinearAlgebra::Vector solution, solution_owned, converged_solution;
+    LinearAlgebra::Vector update, rhs, force;
 
     /**
      * Tractions on meshfree faces load particles through d^k ('Particle
@@ -520,8 +525,7 @@ namespace pg
       Assert(fe.system_to_component_index(i).first == i % dim &&
                fe.system_to_component_index(i).second == i / dim,
              ExcInternalError());
-    owned_dofs    = dof_handler.locally_owned_dofs();
-    relevant_dofs = complete_index_set(dof_handler.n_dofs());
+    owned_dofs = dof_handler.locally_owned_dofs();
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -580,6 +584,8 @@ namespace pg
         for (unsigned int f = 0; f < owned_families.size(); ++f)
           family_elements->build(owned_families[f], family_tables[f]);
       }
+    relevant_dofs =
+      compute_relevant_dofs(dof_handler, particles, families, owned_families);
     time_shape += timer.wall_time();
     timer.restart();
 
@@ -686,7 +692,6 @@ namespace pg
     solution_owned.reinit(owned_dofs, comm);
     converged_solution.reinit(owned_dofs, comm);
     force.reinit(owned_dofs, comm);
-    u_full.reinit(dof_handler.n_dofs());
     time_setup += timer.wall_time() - time_vc;
     compute_assembly_cost();
 
@@ -901,9 +906,8 @@ namespace pg
   void
   Problem<dim>::Implementation::update_full_solution()
   {
+    // the ghost entries from their owners: no full-vector copy
     solution = solution_owned;
-    for (types::global_dof_index i = 0; i < u_full.size(); ++i)
-      u_full[i] = solution[i];
   }
 
 
@@ -945,7 +949,7 @@ namespace pg
   {
     Timer timer;
     failure =
-      assembler->assemble(u_full,
+      assembler->assemble(solution,
                           with_matrix ? &matrix : nullptr,
                           rhs,
                           force,
@@ -1151,7 +1155,7 @@ namespace pg
     v.family_tables          = &family_tables;
     v.owned_fe_cells         = &owned_fe_cells;
     v.owned_dofs             = &owned_dofs;
-    v.u_full                 = &u_full;
+    v.u                      = &solution;
     v.force                  = &force;
     v.constraints            = &constraints;
     v.unit_stress            = &unit_stress;
@@ -1601,10 +1605,10 @@ namespace pg
     const auto &bc = prm.boundary_conditions;
     if (prm.zero_body_force && bc.neumann.empty() && bc.neumann_stress.empty())
       return;
-    const Vector<double> u_saved = u_full;
-    u_full                       = 0;
+    const LinearAlgebra::Vector u_saved = solution;
+    solution                            = 0;
     assemble(false);
-    u_full = u_saved;
+    solution = u_saved;
     AssertThrow(failure.empty(), ExcMessage(failure));
     f_ext = force;
     f_ext *= -1.;
@@ -1643,12 +1647,13 @@ namespace pg
     std::vector<Point<dim>>     X(n);
     std::vector<Tensor<1, dim>> u(n);
     std::vector<double>         V(n);
+    const Vector<double>        u_all = gather_to_all(solution);
     for (unsigned int k = 0; k < n; ++k)
       {
         X[k] = particles.position(k);
         V[k] = particles.volume(k);
         for (unsigned int c = 0; c < dim; ++c)
-          u[k][c] = u_full[particles.dof(k, c)];
+          u[k][c] = u_all[particles.dof(k, c)];
       }
     std::vector<std::vector<unsigned int>> neighbours(n);
     for (unsigned int k = 0; k < n; ++k)
@@ -1735,11 +1740,12 @@ namespace pg
       {
         std::vector<Tensor<1, dim>> u0(particles.n_particles());
         std::vector<double>         V(particles.n_particles());
+        const Vector<double>        u_all = gather_to_all(solution);
         for (unsigned int k = 0; k < u0.size(); ++k)
           {
             V[k] = particles.volume(k);
             for (unsigned int c = 0; c < dim; ++c)
-              u0[k][c] = u_full[particles.dof(k, c)];
+              u0[k][c] = u_all[particles.dof(k, c)];
           }
         disorder_reference = TimeIntegration::rms_about_mean(u0, V);
       }
@@ -1796,9 +1802,8 @@ namespace pg
     const unsigned int n_steps = result.n_steps;
     const double       t       = result.final_time;
 
-    std::vector<Tensor<2, dim>> F(particles.n_particles());
-    for (unsigned int k = 0; k < F.size(); ++k)
-      F[k] = particle_deformation_gradient(k);
+    const std::vector<Tensor<2, dim>> F =
+      view().particle_deformation_gradients();
     if (particles.n_particles() > 0)
       write_particle_table(F);
     write_nodal_stresses(F);
