@@ -92,13 +92,6 @@ namespace pg
     Analysis::Access<dim>
     analysis_access();
 
-    /** F^k of particle @p k (ProblemView::particle_deformation_gradient). */
-    Tensor<2, dim>
-    particle_deformation_gradient(const unsigned int k)
-    {
-      return view().particle_deformation_gradient(k);
-    }
-
     /**
      * The nodal stresses from the particle deformation gradients
      * @p particle_F (Postprocess::NodalStresses::write()).
@@ -245,7 +238,7 @@ namespace pg
     v.family_tables          = &discretization.family_tables;
     v.owned_fe_cells         = &discretization.owned_fe_cells;
     v.owned_dofs             = &discretization.owned_dofs;
-    v.u_full                 = &system.u_full;
+    v.u                      = &system.solution;
     v.force                  = &system.force;
     v.constraints            = &system.constraints;
     v.unit_stress            = &system.particle_loads.unit_stress();
@@ -334,7 +327,7 @@ namespace pg
         return;
       }
     setup();
-    system.update_full_solution();
+    system.update_ghost_values();
     view();
     if (prm.analysis.type == "eigenmodes")
       analysis =

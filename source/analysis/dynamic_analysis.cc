@@ -16,8 +16,8 @@ namespace pg
     {
       const ParticleSet<dim>     &particles = *this->view().particles;
       const FamilySet<dim>       &families  = *this->view().families;
-      const Vector<double>       &u_full    = *this->view().u_full;
-      const unsigned int          n         = particles.n_particles();
+      const Vector<double>        u_full = this->view().gather_displacement();
+      const unsigned int          n      = particles.n_particles();
       std::vector<Point<dim>>     X(n);
       std::vector<Tensor<1, dim>> u(n);
       std::vector<double>         V(n);
@@ -120,11 +120,12 @@ namespace pg
         {
           std::vector<Tensor<1, dim>> u0(particles.n_particles());
           std::vector<double>         V(particles.n_particles());
+          const Vector<double>        u_all = view.gather_displacement();
           for (unsigned int k = 0; k < u0.size(); ++k)
             {
               V[k] = particles.volume(k);
               for (unsigned int c = 0; c < dim; ++c)
-                u0[k][c] = (*view.u_full)[particles.dof(k, c)];
+                u0[k][c] = u_all[particles.dof(k, c)];
             }
           disorder_reference = TimeIntegration::rms_about_mean(u0, V);
         }
@@ -175,9 +176,8 @@ namespace pg
       const unsigned int n_steps = result.n_steps;
       const double       t       = result.final_time;
 
-      std::vector<Tensor<2, dim>> F(particles.n_particles());
-      for (unsigned int k = 0; k < F.size(); ++k)
-        F[k] = view.particle_deformation_gradient(k);
+      const std::vector<Tensor<2, dim>> F =
+        view.particle_deformation_gradients();
       if (particles.n_particles() > 0)
         Postprocess::ParticleFields<dim>::write_table(view, F);
       Postprocess::NodalStresses<dim>::write(view, F, summary);

@@ -171,7 +171,7 @@ namespace pg
 
   template <int dim>
   std::string
-  Assembler<dim>::assemble(const Vector<double>        &u,
+  Assembler<dim>::assemble(const LinearAlgebra::Vector &u,
                            LinearAlgebra::SparseMatrix *matrix_,
                            LinearAlgebra::Vector       &rhs_,
                            LinearAlgebra::Vector       &force_,

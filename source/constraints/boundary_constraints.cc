@@ -56,8 +56,10 @@ namespace pg
   {
     const auto &triangulation = dof_handler.get_triangulation();
     // Built from all cells on every rank (parallel::shared::Triangulation
-    // knows them all), so every rank has the constraints of every DoF its
-    // families touch, however far they reach.
+    // knows them all), for the DoFs in @p relevant_dofs: every DoF that this
+    // rank's families and cells touch. A vertex's DoFs are all relevant or
+    // none, and each decision below reads only its own vertex's lines, so
+    // the lines kept are the same as with all DoFs.
     c.clear();
     c.reinit(relevant_dofs);
 
@@ -71,7 +73,7 @@ namespace pg
           {
             const types::global_dof_index dof =
               object->vertex_dof_index(v, comp);
-            if (c.is_constrained(dof))
+            if (!relevant_dofs.is_element(dof) || c.is_constrained(dof))
               continue;
             c.add_line(dof);
             if (!homogeneous)
@@ -204,6 +206,8 @@ namespace pg
                   std::array<types::global_dof_index, dim> dofs;
                   for (unsigned int comp = 0; comp < dim; ++comp)
                     dofs[comp] = cell->face(f)->vertex_dof_index(v, comp);
+                  if (!relevant_dofs.is_element(dofs[0]))
+                    continue;
                   int pivot = -1;
                   for (unsigned int comp = 0; comp < dim; ++comp)
                     if (!c.is_constrained(dofs[comp]) &&

@@ -1,4 +1,5 @@
 #include <pg/dofs/discretization.h>
+#include <pg/dofs/relevant_dofs.h>
 #include <pg/mesh/mesh_generator.h>
 #include <pg/shape_functions/shape_functions.h>
 
@@ -109,7 +110,10 @@ namespace pg
   void
   Discretization<dim>::compute_relevant_dofs()
   {
-    relevant_dofs = complete_index_set(dof_handler.n_dofs());
+    relevant_dofs = pg::compute_relevant_dofs(dof_handler,
+                                              particles,
+                                              families,
+                                              owned_families);
   }
 
 

@@ -18,7 +18,7 @@ namespace pg
   template <int dim>
   void
   ElementGroup<dim>::recover_local_fields(const unsigned int,
-                                          const Vector<double> &)
+                                          const LinearAlgebra::Vector &)
   {}
 
 

@@ -59,7 +59,7 @@ namespace pg
   template <int dim>
   void
   FamilyGroupBase<dim>::gather(const unsigned int                    e,
-                               const Vector<double>                 &u,
+                               const LinearAlgebra::Vector          &u,
                                std::vector<types::global_dof_index> &dofs,
                                std::vector<Tensor<1, dim>>          &y) const
   {
@@ -151,11 +151,11 @@ namespace pg
 
   template <int dim>
   void
-  FamilyGroup<dim>::assemble(const unsigned int    e,
-                             const Vector<double> &u,
-                             const ElementHistory &history,
-                             GroupScratch         &scratch_base,
-                             LocalSystem          &local) const
+  FamilyGroup<dim>::assemble(const unsigned int           e,
+                             const LinearAlgebra::Vector &u,
+                             const ElementHistory        &history,
+                             GroupScratch                &scratch_base,
+                             LocalSystem                 &local) const
   {
     auto &scratch = static_cast<FamilyScratch<dim> &>(scratch_base);
     this->gather(e, u, local.dofs, scratch.y);
@@ -229,8 +229,8 @@ namespace pg
 
   template <int dim>
   void
-  CpdGroup<dim>::assemble(const unsigned int    e,
-                          const Vector<double> &u,
+  CpdGroup<dim>::assemble(const unsigned int           e,
+                          const LinearAlgebra::Vector &u,
                           const ElementHistory &,
                           GroupScratch &scratch_base,
                           LocalSystem  &local) const

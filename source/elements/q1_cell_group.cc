@@ -100,11 +100,11 @@ namespace pg
 
   template <int dim>
   void
-  Q1CellGroup<dim>::assemble(const unsigned int    e,
-                             const Vector<double> &u,
-                             const ElementHistory &history,
-                             GroupScratch         &scratch_base,
-                             LocalSystem          &local) const
+  Q1CellGroup<dim>::assemble(const unsigned int           e,
+                             const LinearAlgebra::Vector &u,
+                             const ElementHistory        &history,
+                             GroupScratch                &scratch_base,
+                             LocalSystem                 &local) const
   {
     auto       &scratch = static_cast<Q1Scratch<dim> &>(scratch_base);
     const auto &cell    = cells[e];

@@ -47,7 +47,7 @@ namespace pg
       // with the trial gradient at the master.
       const auto &exact     = view.parameters->exact_solution;
       const auto &particles = *view.particles;
-      const auto &u_full    = *view.u_full;
+      const auto &u_full    = *view.u; // owned cells and families
       const auto  comm      = view.mpi_communicator;
       double      e0 = 0, e1 = 0, n0 = 0, n1 = 0, eE = 0, nE = 0;
       // the energy norm of the linearised problem, G : A(1) : G

@@ -18,13 +18,17 @@ namespace pg
       const auto &prm       = *view.parameters;
       const auto &locations = *view.line_locations;
       summary.line_samples.clear();
+      // the samples lie in any cell: from the gathered displacement (the
+      // same locations on every rank)
+      const Vector<double> u_all =
+        locations.empty() ? Vector<double>() : view.gather_displacement();
       for (const auto &sample : locations)
         summary.line_samples.push_back(
           {prm.output.lines[sample.line].name,
            sample.arc_length,
            std::vector<double>(sample.position.begin_raw(),
                                sample.position.end_raw()),
-           view.displacement_at(sample.cell, sample.reference)});
+           view.displacement_at(sample.cell, sample.reference, u_all)});
       if (view.root && !locations.empty())
         {
           std::ofstream table(prm.output.directory +

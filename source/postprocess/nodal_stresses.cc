@@ -31,10 +31,7 @@ namespace pg
                                  TableHandler &,
                                  RunSummary &summary)
     {
-      std::vector<Tensor<2, dim>> F(view.particles->n_particles());
-      for (unsigned int k = 0; k < F.size(); ++k)
-        F[k] = view.particle_deformation_gradient(k);
-      write(view, F, summary);
+      write(view, view.particle_deformation_gradients(), summary);
     }
 
 
@@ -50,6 +47,8 @@ namespace pg
       const auto &particles     = *view.particles;
       const auto &material      = *view.material;
       const auto &meshfree      = *view.meshfree;
+      // every FE cell's vertex stresses: from the gathered displacement
+      const Vector<double> u_all = view.gather_displacement();
 
       const unsigned int        n_vertices = triangulation.n_vertices();
       std::vector<Tensor<2, 3>> fe_stress(n_vertices);
@@ -62,7 +61,7 @@ namespace pg
           {
             fe_values.reinit(cell);
             fe_values[FEValuesExtractors::Vector(0)]
-              .get_function_gradients(*view.u_full, gradients);
+              .get_function_gradients(u_all, gradients);
             for (const unsigned int v : cell->vertex_indices())
               {
                 fe_stress[cell->vertex_index(v)] += material.cauchy_stress(

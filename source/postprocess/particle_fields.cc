@@ -32,9 +32,8 @@ namespace pg
         return;
       // The oscillation indicator and a plain table of the particle fields
       // (for plots) at the final state; every rank knows all particles.
-      std::vector<Tensor<2, dim>> F(particles.n_particles());
-      for (unsigned int k = 0; k < F.size(); ++k)
-        F[k] = view.particle_deformation_gradient(k);
+      const std::vector<Tensor<2, dim>> F =
+        view.particle_deformation_gradients();
       double oscillation = 0, deformation = 0;
       for (unsigned int k = 0; k < F.size(); ++k)
         {
@@ -68,6 +67,8 @@ namespace pg
     ParticleFields<dim>::write_table(const ProblemView<dim>            &view,
                                      const std::vector<Tensor<2, dim>> &F)
     {
+      // collective, before the root test
+      const Vector<double> u_all = view.gather_displacement();
       if (!view.root)
         return;
       const auto   &particles = *view.particles;
@@ -79,7 +80,7 @@ namespace pg
         {
           table << particles.position(k);
           for (unsigned int c = 0; c < dim; ++c)
-            table << " " << (*view.u_full)[particles.dof(k, c)];
+            table << " " << u_all[particles.dof(k, c)];
           for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int j = 0; j < dim; ++j)
               table << " " << F[k][i][j];

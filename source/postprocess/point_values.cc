@@ -15,10 +15,15 @@ namespace pg
       // Point values from the Q1 interpolant (the nodal values at vertices).
       const auto &locations = *view.point_locations;
       summary.points.clear();
+      // the points lie in any cell: from the gathered displacement (the
+      // same points on every rank)
+      const Vector<double> u_all =
+        locations.empty() ? Vector<double>() : view.gather_displacement();
       for (unsigned int i = 0; i < locations.size(); ++i)
         summary.points.emplace_back(view.parameters->output.points[i].first,
                                     view.displacement_at(locations[i].first,
-                                                         locations[i].second));
+                                                         locations[i].second,
+                                                         u_all));
     }
 
 

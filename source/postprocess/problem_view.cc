@@ -1,25 +1,96 @@
+#include <pg/dofs/relevant_dofs.h>
 #include <pg/postprocess/problem_view.h>
 
 namespace pg
 {
   namespace Postprocess
   {
+    namespace
+    {
+      /** F^k from a vector @p u read by global DoF index. */
+      template <int dim, typename VectorType>
+      Tensor<2, dim>
+      deformation_gradient(const ProblemView<dim> &view,
+                           const unsigned int      k,
+                           const VectorType       &u)
+      {
+        const auto     members   = view.families->members(k);
+        const auto    &B         = view.family_elements->master_gradients(k);
+        const auto    &particles = *view.particles;
+        Tensor<2, dim> F;
+        for (unsigned int b = 0; b < members.size(); ++b)
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              const double y = particles.position(members[b])[i] -
+                               particles.position(k)[i] +
+                               u[particles.dof(members[b], i)];
+              for (unsigned int j = 0; j < dim; ++j)
+                F[i][j] += y * B[b][j];
+            }
+        return F;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    Vector<double>
+    ProblemView<dim>::gather_displacement() const
+    {
+      return gather_to_all(*u);
+    }
+
+
+
     template <int dim>
     Tensor<2, dim>
     ProblemView<dim>::particle_deformation_gradient(const unsigned int k) const
     {
-      const auto     members = families->members(k);
-      const auto    &B       = family_elements->master_gradients(k);
-      Tensor<2, dim> F;
-      for (unsigned int b = 0; b < members.size(); ++b)
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            const double y = particles->position(members[b])[i] -
-                             particles->position(k)[i] +
-                             (*u_full)[particles->dof(members[b], i)];
+      return deformation_gradient(*this, k, *u);
+    }
+
+
+
+    template <int dim>
+    Tensor<2, dim>
+    ProblemView<dim>::particle_deformation_gradient(
+      const unsigned int    k,
+      const Vector<double> &u_all) const
+    {
+      return deformation_gradient(*this, k, u_all);
+    }
+
+
+
+    template <int dim>
+    std::vector<Tensor<2, dim>>
+    ProblemView<dim>::particle_deformation_gradients() const
+    {
+      // F^k of the owned families from the ghosted u, then copied to every
+      // rank (bit for bit: the same F as from a full vector)
+      std::vector<Tensor<2, dim>> F(particles->n_particles());
+      std::vector<unsigned int>   masters;
+      std::vector<double>         values;
+      for (const unsigned int k : *owned_families)
+        {
+          F[k] = deformation_gradient(*this, k, *u);
+          masters.push_back(k);
+          for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int j = 0; j < dim; ++j)
-              F[i][j] += y * B[b][j];
-          }
+              values.push_back(F[k][i][j]);
+        }
+      if (Utilities::MPI::n_mpi_processes(mpi_communicator) == 1)
+        return F;
+      const auto all_masters =
+        Utilities::MPI::all_gather(mpi_communicator, masters);
+      const auto all_values =
+        Utilities::MPI::all_gather(mpi_communicator, values);
+      for (unsigned int r = 0; r < all_masters.size(); ++r)
+        for (unsigned int m = 0; m < all_masters[r].size(); ++m)
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              F[all_masters[r][m]][i][j] =
+                all_values[r][(m * dim + i) * dim + j];
       return F;
     }
 
@@ -27,15 +98,16 @@ namespace pg
 
     template <int dim>
     std::vector<double>
-    ProblemView<dim>::displacement_at(const CellIterator &cell,
-                                      const Point<dim>   &reference) const
+    ProblemView<dim>::displacement_at(const CellIterator   &cell,
+                                      const Point<dim>     &reference,
+                                      const Vector<double> &u_all) const
     {
       std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
       cell->get_dof_indices(dofs);
       std::vector<double> value(dim, 0.);
       for (unsigned int j = 0; j < dofs.size(); ++j)
         value[fe->system_to_component_index(j).first] +=
-          fe->shape_value(j, reference) * (*u_full)[dofs[j]];
+          fe->shape_value(j, reference) * u_all[dofs[j]];
       return value;
     }
 

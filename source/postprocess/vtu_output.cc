@@ -67,11 +67,12 @@ namespace pg
       if (!prm.output.vtu)
         return;
 
-      const auto    &particles = *view.particles;
-      const auto    &u_full    = *view.u_full;
-      const auto    &material  = *view.material;
-      const MPI_Comm comm      = view.mpi_communicator;
-      DataOut<dim>   data_out;
+      const auto &particles = *view.particles;
+      // DataOut reads any DoF: gathered
+      const Vector<double> u_full   = view.gather_displacement();
+      const auto          &material = *view.material;
+      const MPI_Comm       comm     = view.mpi_communicator;
+      DataOut<dim>         data_out;
       data_out.attach_dof_handler(*view.dof_handler);
       const std::vector<std::string> names(dim, "displacement");
       data_out.add_data_vector(
@@ -82,13 +83,11 @@ namespace pg
           dim,
           DataComponentInterpretation::component_is_part_of_vector));
       // meshfree cells show the particles' F (section "What a run writes")
-      std::vector<Tensor<2, dim>> particle_F(particles.n_particles());
+      const std::vector<Tensor<2, dim>> particle_F =
+        view.particle_deformation_gradients();
       std::vector<int> particle_at(view.triangulation->n_vertices(), -1);
       for (unsigned int k = 0; k < particles.n_particles(); ++k)
-        {
-          particle_F[k] = view.particle_deformation_gradient(k);
-          particle_at[particles.vertex(k)] = k;
-        }
+        particle_at[particles.vertex(k)] = k;
       const StressPostprocessor<dim> stress(
         material,
         *view.meshfree,
@@ -119,9 +118,7 @@ namespace pg
           data.clear();
           for (unsigned int c = 0; c < dim; ++c)
             data.push_back(u_full[particles.dof(k, c)]);
-          stress_field_values(material,
-                              view.particle_deformation_gradient(k),
-                              stress_values);
+          stress_field_values(material, particle_F[k], stress_values);
           data.insert(data.end(), stress_values.begin(), stress_values.end());
           data.push_back(particles.volume(k));
           for (unsigned int c = 0; c < dim; ++c)

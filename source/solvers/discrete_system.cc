@@ -131,7 +131,6 @@ namespace pg
     solution.reinit(owned_dofs, relevant_dofs, comm);
     solution_owned.reinit(owned_dofs, comm);
     force.reinit(owned_dofs, comm);
-    u_full.reinit(discretization.dof_handler.n_dofs());
 
     // The state at every evaluation point of every group (the tables are
     // final now: the VC correction keeps their points).
@@ -202,11 +201,9 @@ namespace pg
 
   template <int dim>
   void
-  DiscreteSystem<dim>::update_full_solution()
+  DiscreteSystem<dim>::update_ghost_values()
   {
     solution = solution_owned;
-    for (types::global_dof_index i = 0; i < u_full.size(); ++i)
-      u_full[i] = solution[i];
   }
 
 
@@ -216,7 +213,7 @@ namespace pg
   DiscreteSystem<dim>::assemble(const bool with_matrix)
   {
     Timer timer;
-    failure    = assembler->assemble(u_full,
+    failure    = assembler->assemble(solution,
                                   with_matrix ? &matrix : nullptr,
                                   rhs,
                                   force,
@@ -260,7 +257,7 @@ namespace pg
     set_load_factor(t);
     make_constraints(constraints, false);
     constraints.distribute(solution_owned);
-    update_full_solution();
+    update_ghost_values();
     last_failure.clear();
 
     const NewtonSolver::Result result =
@@ -302,7 +299,7 @@ namespace pg
     zero_constraints.distribute(update);
     energy = update * rhs;
     solution_owned += update;
-    update_full_solution();
+    update_ghost_values();
     return true;
   }
 
@@ -327,10 +324,10 @@ namespace pg
     const auto &bc = prm.boundary_conditions;
     if (prm.zero_body_force && bc.neumann.empty() && bc.neumann_stress.empty())
       return;
-    const Vector<double> u_saved = u_full;
-    u_full                       = 0;
+    const LinearAlgebra::Vector u_saved = solution;
+    solution                            = 0;
     assemble(false);
-    u_full = u_saved;
+    solution = u_saved;
     AssertThrow(failure.empty(), ExcMessage(failure));
     f_ext = force;
     f_ext *= -1.;

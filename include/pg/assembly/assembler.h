@@ -66,12 +66,13 @@ namespace pg
     using LoadTerm = std::function<void(Assembler<dim> &)>;
 
     /**
-     * Assemble at the displacement @p u (indexed by global DoF) into
+     * Assemble at the displacement @p u (indexed by global DoF, ghosted: it
+     * holds the DoFs of this rank's elements) into
      * @p rhs, @p force and, if not null, @p matrix (all zeroed first).
      * Returns the first failure on this rank, or an empty string.
      */
     std::string
-    assemble(const Vector<double>        &u,
+    assemble(const LinearAlgebra::Vector &u,
              LinearAlgebra::SparseMatrix *matrix,
              LinearAlgebra::Vector       &rhs,
              LinearAlgebra::Vector       &force,

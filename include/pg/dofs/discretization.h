@@ -121,7 +121,7 @@ namespace pg
     double time_mesh = 0, time_setup = 0, time_shape = 0;
 
   private:
-    /** relevant_dofs: the DoFs this rank reads (today all of them). */
+    /** relevant_dofs: the DoFs this rank reads (dofs/relevant_dofs.h). */
     void
     compute_relevant_dofs();
   };

@@ -2,6 +2,7 @@
 #define pg_elements_element_group_h
 
 #include <pg/base/global.h>
+#include <pg/base/linear_algebra.h>
 
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/point.h>
@@ -99,23 +100,25 @@ namespace pg
 
     /**
      * The local system of element @p e at the displacement @p u (indexed by
-     * global DoF): dofs, residual and (if local.with_matrix) the tangent,
-     * reading the committed and writing the trial state of @p history.
+     * global DoF; a ghosted vector that holds the DoFs of the element, see
+     * compute_relevant_dofs()): dofs, residual and (if local.with_matrix) the
+     * tangent, reading the committed and writing the trial state of @p history.
      * Throws with a message on failure.
      */
     virtual void
-    assemble(const unsigned int    e,
-             const Vector<double> &u,
-             const ElementHistory &history,
-             GroupScratch         &scratch,
-             LocalSystem          &local) const = 0;
+    assemble(const unsigned int           e,
+             const LinearAlgebra::Vector &u,
+             const ElementHistory        &history,
+             GroupScratch                &scratch,
+             LocalSystem                 &local) const = 0;
 
     /**
-     * After a Newton update @p du (indexed by global DoF): recover the
+     * After a Newton update @p du (indexed by global DoF, ghosted like u of
+     * assemble()): recover the
      * condensed local fields of element @p e. Nothing by default.
      */
     virtual void
-    recover_local_fields(const unsigned int e, const Vector<double> &du);
+    recover_local_fields(const unsigned int e, const LinearAlgebra::Vector &du);
 
     /** "Q1 cell 17", "the family of particle 4", for messages. */
     virtual std::string

@@ -46,7 +46,7 @@ namespace pg
     /** The DoFs of family @p e and the positions y of its members at @p u. */
     void
     gather(const unsigned int                    e,
-           const Vector<double>                 &u,
+           const LinearAlgebra::Vector          &u,
            std::vector<types::global_dof_index> &dofs,
            std::vector<Tensor<1, dim>>          &y) const;
 
@@ -81,11 +81,11 @@ namespace pg
     create_scratch() const override;
 
     void
-    assemble(const unsigned int    e,
-             const Vector<double> &u,
-             const ElementHistory &history,
-             GroupScratch         &scratch,
-             LocalSystem          &local) const override;
+    assemble(const unsigned int           e,
+             const LinearAlgebra::Vector &u,
+             const ElementHistory        &history,
+             GroupScratch                &scratch,
+             LocalSystem                 &local) const override;
 
   private:
     const std::vector<QuadratureTable<dim>> &family_tables;
@@ -124,11 +124,11 @@ namespace pg
     create_scratch() const override;
 
     void
-    assemble(const unsigned int    e,
-             const Vector<double> &u,
-             const ElementHistory &history,
-             GroupScratch         &scratch,
-             LocalSystem          &local) const override;
+    assemble(const unsigned int           e,
+             const LinearAlgebra::Vector &u,
+             const ElementHistory        &history,
+             GroupScratch                &scratch,
+             LocalSystem                 &local) const override;
 
   private:
     const CpdInteractions<dim> &interactions;

@@ -44,11 +44,11 @@ namespace pg
     create_scratch() const override;
 
     void
-    assemble(const unsigned int    e,
-             const Vector<double> &u,
-             const ElementHistory &history,
-             GroupScratch         &scratch,
-             LocalSystem          &local) const override;
+    assemble(const unsigned int           e,
+             const LinearAlgebra::Vector &u,
+             const ElementHistory        &history,
+             GroupScratch                &scratch,
+             LocalSystem                 &local) const override;
 
     std::string
     element_name(const unsigned int e) const override;

@@ -61,7 +61,7 @@ namespace pg
     /**
      * A read-only view of a set-up problem (as ASPECT's SimulatorAccess):
      * const pointers to the objects the problem owns, filled once after
-     * setup. The objects change their values during the run (u_full,
+     * setup. The objects change their values during the run (u,
      * force), not their addresses, so the view stays valid. The pointers
      * family_elements and cpd are null where the problem has none.
      */
@@ -95,8 +95,13 @@ namespace pg
       const std::vector<CellIterator>         *owned_fe_cells = nullptr;
       const IndexSet                          *owned_dofs     = nullptr;
 
-      /** The displacement, all DoFs on every rank. */
-      const Vector<double> *u_full = nullptr;
+      /**
+       * The displacement, ghosted: the owned DoFs and those of the members
+       * of the owned families and of the locally owned cells
+       * (compute_relevant_dofs()). For other DoFs use
+       * gather_displacement().
+       */
+      const LinearAlgebra::Vector *u = nullptr;
       /** f_int - f_ext of the last assembly (owned DoFs). */
       const LinearAlgebra::Vector     *force       = nullptr;
       const AffineConstraints<double> *constraints = nullptr;
@@ -126,16 +131,41 @@ namespace pg
       std::function<void(double)> add_dynamic_statistics;
 
       /**
+       * The displacement at every DoF on every rank, gathered from the
+       * owners (collective: all ranks call it together; see
+       * gather_to_all()).
+       */
+      Vector<double>
+      gather_displacement() const;
+
+      /**
        * The deformation gradient F^k = sum_b (x_b - x_k) (x) B_b of the
-       * particle @p k, with the master gradients B of family k.
+       * particle @p k, with the master gradients B of family k, from the
+       * ghosted u: for the families this rank owns.
        */
       Tensor<2, dim>
       particle_deformation_gradient(const unsigned int k) const;
 
-      /** The Q1 interpolant of u_full at @p reference in @p cell. */
+      /** The same from the gathered displacement @p u_all (any k). */
+      Tensor<2, dim>
+      particle_deformation_gradient(const unsigned int    k,
+                                    const Vector<double> &u_all) const;
+
+      /**
+       * F^k of every particle on every rank: each rank computes those of
+       * its owned families, and all are copied to all (collective).
+       */
+      std::vector<Tensor<2, dim>>
+      particle_deformation_gradients() const;
+
+      /**
+       * The Q1 interpolant of the gathered displacement @p u_all at
+       * @p reference in @p cell (any cell).
+       */
       std::vector<double>
-      displacement_at(const CellIterator &cell,
-                      const Point<dim>   &reference) const;
+      displacement_at(const CellIterator   &cell,
+                      const Point<dim>     &reference,
+                      const Vector<double> &u_all) const;
 
       /** grad u of the exact solution at @p p (the function above). */
       Tensor<2, dim>

@@ -141,7 +141,7 @@ namespace pg
     void
     displacement_changed() override
     {
-      update_full_solution();
+      update_ghost_values();
     }
 
     void
@@ -201,8 +201,9 @@ namespace pg
           const LinearAlgebra::Vector       &b) override;
     /** @} */
 
+    /** solution = solution_owned: the ghost entries from their owners. */
     void
-    update_full_solution();
+    update_ghost_values();
 
     /**
      * d^k of every particle from the current family tables (summed over
@@ -267,9 +268,13 @@ namespace pg
 
     AffineConstraints<double>   constraints, zero_constraints;
     LinearAlgebra::SparseMatrix matrix;
-    LinearAlgebra::Vector       solution, solution_owned;
-    LinearAlgebra::Vector       update, rhs, force;
-    Vector<double>              u_full;
+    /**
+     * solution is ghosted over the relevant DoFs (what the assembly and the
+     * postprocessors read); solution_owned holds the owned DoFs that the
+     * Newton updates change.
+     */
+    LinearAlgebra::Vector solution, solution_owned;
+    LinearAlgebra::Vector update, rhs, force;
 
     /** The VC system, with its own matrix (VC codes only). */
     std::unique_ptr<CorrectionSystem<dim>> correction_system;
