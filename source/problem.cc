@@ -92,16 +92,6 @@ namespace pg
     Analysis::Access<dim>
     analysis_access();
 
-    /**
-     * The nodal stresses from the particle deformation gradients
-     * @p particle_F (Postprocess::NodalStresses::write()).
-     */
-    void
-    write_nodal_stresses(const std::vector<Tensor<2, dim>> &particle_F)
-    {
-      Postprocess::NodalStresses<dim>::write(view(), particle_F, summary);
-    }
-
     const Parameters::AllParameters<dim>     &prm;
     const MPI_Comm                            comm;
     const bool                                root;
