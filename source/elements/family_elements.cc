@@ -81,7 +81,10 @@ namespace pg
         checked_gradients(k, geometry(k), 0, master[k]);
         ShapeFunctions::make_effective(master[k]);
       }
-    master_test = master;
+    // PBG tests with its trial functions: no copy (memory, all families)
+    master_test.clear();
+    if (formulation.method != FormulationCode::Method::pbg)
+      master_test = master;
     alpha.clear();
     if (formulation.variational_consistency)
       {
@@ -177,9 +180,10 @@ namespace pg
             Tensor<1, dim> c = phi[k][a] * alpha[k];
             if (!second_order_factors.empty())
               c += phi[k][a] * (second_order_factors[k] * geom.bonds[a]);
-            master_test[k][a] = master[k][a] + c;
             if (formulation.method == FormulationCode::Method::pbg)
               master[k][a] += c;
+            else
+              master_test[k][a] = master[k][a] + c;
           }
       }
   }
