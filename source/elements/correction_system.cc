@@ -18,122 +18,6 @@
 
 namespace pg
 {
-  namespace
-  {
-    /**
-     * solve_by_shifted_refinement() (solvers/linear_solver.h) with the
-     * shifted matrix A + eps D factorized by distributed MUMPS instead of
-     * serial KLU: KLU gathers A and its LU factors on rank 0 (at 2e5 DoFs
-     * about 690 MB on that rank alone, doc/memory.md); MUMPS keeps a share
-     * on every rank. Used on more than one rank only: the pivot order, so
-     * the round-off digits of alpha, differ from KLU's. KLU where Trilinos
-     * was built without MUMPS.
-     */
-    unsigned int
-    solve_by_distributed_shifted_refinement(
-      const LinearAlgebra::SparseMatrix &matrix,
-      LinearAlgebra::Vector             &solution,
-      const LinearAlgebra::Vector       &rhs,
-      const double                       relative_shift,
-      const double                       tolerance,
-      const unsigned int                 max_corrections,
-      const double                       floor_tolerance = 1e-12)
-    {
-      using size_type = types::global_dof_index;
-      // the owned rows of A + eps D without the stored zeros of A
-      const Epetra_CrsMatrix  &A = matrix.trilinos_matrix();
-      std::vector<size_type>   rows, columns;
-      std::vector<double>      values;
-      std::vector<std::size_t> row_start(1, 0);
-      for (int r = 0; r < A.NumMyRows(); ++r)
-        {
-          int     n_entries;
-          double *row_values;
-          int    *row_columns;
-          A.ExtractMyRowView(r, n_entries, row_values, row_columns);
-          const size_type row      = TrilinosWrappers::global_row_index(A, r);
-          double          largest  = 0;
-          std::size_t     diagonal = 0;
-          bool            has_diagonal = false;
-          for (int i = 0; i < n_entries; ++i)
-            {
-              largest = std::max(largest, std::abs(row_values[i]));
-              const size_type column =
-                TrilinosWrappers::global_column_index(A, row_columns[i]);
-              if (column == row)
-                {
-                  diagonal     = columns.size();
-                  has_diagonal = true;
-                }
-              if (row_values[i] != 0. || column == row)
-                {
-                  columns.push_back(column);
-                  values.push_back(row_values[i]);
-                }
-            }
-          if (!has_diagonal)
-            {
-              diagonal = columns.size();
-              columns.push_back(row);
-              values.push_back(0.);
-            }
-          values[diagonal] += relative_shift * largest;
-          rows.push_back(row);
-          row_start.push_back(columns.size());
-        }
-
-      TrilinosWrappers::SparsityPattern pattern(
-        matrix.locally_owned_range_indices(),
-        matrix.locally_owned_domain_indices(),
-        matrix.get_mpi_communicator());
-      for (unsigned int r = 0; r < rows.size(); ++r)
-        pattern.add_entries(rows[r],
-                            columns.begin() + row_start[r],
-                            columns.begin() + row_start[r + 1]);
-      pattern.compress();
-      LinearAlgebra::SparseMatrix shifted;
-      shifted.reinit(pattern);
-      for (unsigned int r = 0; r < rows.size(); ++r)
-        shifted.set(rows[r],
-                    row_start[r + 1] - row_start[r],
-                    columns.data() + row_start[r],
-                    values.data() + row_start[r]);
-      shifted.compress(VectorOperation::insert);
-      rows    = {};
-      columns = {};
-      values  = {};
-
-      static const bool have_mumps = Amesos().Query("Amesos_Mumps");
-      SolverControl     control(1, 0, false, false);
-      TrilinosWrappers::SolverDirect solver(
-        control,
-        TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                       have_mumps ?
-                                                         "Amesos_Mumps" :
-                                                         "Amesos_Klu"));
-      solver.initialize(shifted);
-      LinearAlgebra::Vector residual(rhs), correction(rhs);
-      solution                 = 0;
-      const double rhs_norm    = rhs.l2_norm();
-      double       previous    = std::numeric_limits<double>::infinity();
-      unsigned int corrections = 0;
-      for (; corrections < max_corrections; ++corrections)
-        {
-          matrix.vmult(residual, solution);
-          residual.sadd(-1., 1., rhs);
-          const double norm = residual.l2_norm();
-          if (norm <= tolerance * rhs_norm)
-            break;
-          // the round-off floor of b - A x: small, and no longer halved
-          if (norm <= floor_tolerance * rhs_norm && norm > 0.5 * previous)
-            break;
-          previous = norm;
-          solver.solve(correction, residual);
-          solution += correction;
-        }
-      return corrections;
-    }
-  } // namespace
 
 
 
@@ -513,15 +397,19 @@ namespace pg
     // MPI ranks. D is the largest entry of each row. Factors by serial KLU
     // on one rank, by distributed MUMPS on more (KLU would hold all factors
     // on rank 0; MUMPS changes the round-off digits of alpha).
+    static const bool  have_mumps = Amesos().Query("Amesos_Mumps");
     const unsigned int corrections =
-      Utilities::MPI::n_mpi_processes(comm) == 1 ?
-        solve_by_shifted_refinement(matrix, solution, rhs, 1e-9, 1e-14, 50) :
-        solve_by_distributed_shifted_refinement(matrix,
-                                                solution,
-                                                rhs,
-                                                1e-9,
-                                                1e-14,
-                                                50);
+      solve_by_shifted_refinement(matrix,
+                                  solution,
+                                  rhs,
+                                  1e-9,
+                                  1e-14,
+                                  50,
+                                  1e-12,
+                                  Utilities::MPI::n_mpi_processes(comm) > 1 &&
+                                      have_mumps ?
+                                    "Amesos_Mumps" :
+                                    "Amesos_Klu");
     AssertThrow(corrections < 50,
                 ExcMessage("The VC system could not be solved: change "
                            "the VC boundary option of 'Formulation' in "

@@ -86,7 +86,8 @@ namespace pg
                               const double                       relative_shift,
                               const double                       tolerance,
                               const unsigned int max_corrections,
-                              const double       floor_tolerance)
+                              const double       floor_tolerance,
+                              const std::string &direct_solver)
   {
     using size_type = types::global_dof_index;
     // The owned rows of A + eps D without the stored zeros of A, read
@@ -150,11 +151,15 @@ namespace pg
                   columns.data() + row_start[r],
                   values.data() + row_start[r]);
     shifted.compress(VectorOperation::insert);
+    // the copies are in the matrix now: free them before the factorization
+    rows    = {};
+    columns = {};
+    values  = {};
 
     SolverControl                  control(1, 0, false, false);
     TrilinosWrappers::SolverDirect solver(
       control,
-      TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Klu"));
+      TrilinosWrappers::SolverDirect::AdditionalData(false, direct_solver));
     solver.initialize(shifted);
     LinearAlgebra::Vector residual(rhs), correction(rhs);
     solution                 = 0;

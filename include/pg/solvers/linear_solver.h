@@ -7,6 +7,8 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <string>
+
 namespace pg
 {
   /**
@@ -47,7 +49,9 @@ namespace pg
    * DoFs, 2.5e-14 to 6.5e-14 |b| at 50,000), so a fixed 1e-14 alone is met
    * by chance or never. Returns the number of corrections applied;
    * @p max_corrections if neither criterion was met (the caller decides
-   * what that means).
+   * what that means). @p direct_solver names the Amesos factorization of
+   * A + eps D (serial "Amesos_Klu", or distributed "Amesos_Mumps", which
+   * keeps a share of the factors on every rank).
    */
   unsigned int
   solve_by_shifted_refinement(const LinearAlgebra::SparseMatrix &matrix,
@@ -56,7 +60,8 @@ namespace pg
                               const double                       relative_shift,
                               const double                       tolerance,
                               const unsigned int max_corrections,
-                              const double       floor_tolerance = 1e-12);
+                              const double       floor_tolerance = 1e-12,
+                              const std::string &direct_solver = "Amesos_Klu");
 } // namespace pg
 
 #endif
