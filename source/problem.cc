@@ -195,7 +195,9 @@ namespace pg
       particle_loads.traction_from_exact_stress()   ? "exact stress" :
       particle_loads.traction_from_test_functions() ? "test functions" :
                                                       "geometry",
-      [this](const types::boundary_id id) { return system.is_neumann(id); },
+      [this](const types::boundary_id id) {
+        return system.loads.is_neumann(id);
+      },
       particle_loads.boundary_area_weights());
   }
 

@@ -229,19 +229,6 @@ namespace pg
       prm.set_load_factor(t);
     }
 
-    /** Is @p id in 'Neumann' or in 'Neumann stress'? */
-    bool
-    is_neumann(const types::boundary_id id) const
-    {
-      return loads.is_neumann(id);
-    }
-
-    bool
-    has_neumann_face(const CellIterator &cell) const
-    {
-      return loads.has_neumann_face(cell);
-    }
-
     /**
      * f_ext at the time of the parsed functions: the loads are dead, so
      * f_ext = -(f_int - f_ext)(u = 0), one residual assembly (none without
