@@ -1,3 +1,4 @@
+#include <pg/base/exceptions.h>
 #include <pg/dofs/discretization.h>
 #include <pg/dofs/relevant_dofs.h>
 #include <pg/mesh/mesh_generator.h>
@@ -87,13 +88,61 @@ namespace pg
           is_cpd ? parse_formulation_code("PBG U1") : formulation,
           ShapeFunctions::parse_base(discretization_parameters.shape_functions),
           discretization_parameters.weight_exponent);
-        family_elements->initialize();
         for (unsigned int k = 0; k < particles.n_particles(); ++k)
           if (owned_dofs.is_element(particles.dof(k, 0)))
             owned_families.push_back(k);
+        const std::vector<bool> needed = needed_families(formulation);
         family_tables.resize(owned_families.size());
-        for (unsigned int f = 0; f < owned_families.size(); ++f)
-          family_elements->build(owned_families[f], family_tables[f]);
+        const MPI_Comm comm = triangulation.get_communicator();
+        if (Utilities::MPI::n_mpi_processes(comm) == 1)
+          {
+            family_elements->initialize(needed);
+            for (unsigned int f = 0; f < owned_families.size(); ++f)
+              family_elements->build(owned_families[f], family_tables[f]);
+          }
+        else
+          {
+            // A family one rank rejects stops every rank, with the message
+            // one rank would give: the first family singular at its master,
+            // else the first singular at another point.
+            bool failed = false;
+            try
+              {
+                family_elements->initialize(needed);
+                for (unsigned int f = 0; f < owned_families.size(); ++f)
+                  family_elements->build(owned_families[f], family_tables[f]);
+              }
+            catch (const ExcSingularFamily &)
+              {
+                failed = true;
+              }
+            if (Utilities::MPI::logical_or(failed, comm))
+              {
+                const auto first_rejected = [&](const bool master_only) {
+                  for (unsigned int k = 0; k < families.n_families(); ++k)
+                    if (master_only ?
+                          (needed.empty() || needed[k]) :
+                          owned_dofs.is_element(particles.dof(k, 0)))
+                      try
+                        {
+                          family_elements->check_family(k, master_only);
+                        }
+                      catch (const ExcSingularFamily &)
+                        {
+                          return k;
+                        }
+                  return numbers::invalid_unsigned_int;
+                };
+                for (const bool master_only : {true, false})
+                  {
+                    const unsigned int k =
+                      Utilities::MPI::min(first_rejected(master_only), comm);
+                    if (k != numbers::invalid_unsigned_int)
+                      family_elements->check_family(k, master_only);
+                  }
+                AssertThrow(false, ExcInternalError());
+              }
+          }
       }
     time_shape += timer.wall_time();
     timer.restart();
@@ -102,6 +151,34 @@ namespace pg
     compute_relevant_dofs();
     mesh_diameter = GridTools::diameter(triangulation);
     time_setup += timer.wall_time();
+  }
+
+
+
+  template <int dim>
+  std::vector<bool>
+  Discretization<dim>::needed_families(const FormulationCode &formulation) const
+  {
+    // VC2 solves its correction system with every family on every rank
+    if (formulation.second_order_consistency ||
+        Utilities::MPI::n_mpi_processes(triangulation.get_communicator()) == 1)
+      return {};
+    // The owned families and their members; PPG1 also the members' members
+    // (a table of family e reads g^{jje} of its member j, and the 'exact
+    // stress' force of particle k builds the tables of k's members).
+    std::vector<bool> needed(families.n_families(), false);
+    for (const unsigned int k : owned_families)
+      for (const unsigned int j : families.members(k))
+        needed[j] = true;
+    if (formulation.method == FormulationCode::Method::ppg1)
+      {
+        const std::vector<bool> ring = needed;
+        for (unsigned int k = 0; k < ring.size(); ++k)
+          if (ring[k])
+            for (const unsigned int j : families.members(k))
+              needed[j] = true;
+      }
+    return needed;
   }
 
 

@@ -73,27 +73,53 @@ namespace pg
 
   template <int dim>
   void
-  FamilyElements<dim>::initialize()
+  FamilyElements<dim>::initialize(const std::vector<bool> &needed)
   {
-    master.resize(families.n_families());
+    Assert(needed.empty() || needed.size() == families.n_families(),
+           ExcDimensionMismatch(needed.size(), families.n_families()));
+    const auto is_needed = [&](const unsigned int k) {
+      return needed.empty() || needed[k];
+    };
+    master.assign(families.n_families(), {});
     for (unsigned int k = 0; k < families.n_families(); ++k)
-      {
-        checked_gradients(k, geometry(k), 0, master[k]);
-        ShapeFunctions::make_effective(master[k]);
-      }
+      if (is_needed(k))
+        {
+          checked_gradients(k, geometry(k), 0, master[k]);
+          ShapeFunctions::make_effective(master[k]);
+        }
     // PBG tests with its trial functions: no copy (memory, all families)
     master_test.clear();
     if (formulation.method != FormulationCode::Method::pbg)
       master_test = master;
     alpha.clear();
+    phi.clear();
     if (formulation.variational_consistency)
       {
         phi.resize(families.n_families());
         for (unsigned int k = 0; k < families.n_families(); ++k)
-          phi[k] =
-            ShapeFunctions::correction_function(family_correction_function(k),
-                                                geometry(k));
+          if (is_needed(k))
+            phi[k] =
+              ShapeFunctions::correction_function(family_correction_function(k),
+                                                  geometry(k));
       }
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyElements<dim>::check_family(const unsigned int k,
+                                    const bool         master_only) const
+  {
+    const ShapeFunctions::FamilyGeometry<dim> geom = geometry(k);
+    std::vector<Tensor<1, dim>>               g;
+    // build() of PBG U1 uses the master only; PPG skips it (j != k)
+    const bool u1 = (formulation.method == FormulationCode::Method::pbg &&
+                     formulation.points == FormulationCode::Points::u1);
+    const unsigned int n_points =
+      (master_only || u1) ? 1 : families.members(k).size();
+    for (unsigned int point = 0; point < n_points; ++point)
+      checked_gradients(k, geom, point, g);
   }
 
 
@@ -175,6 +201,7 @@ namespace pg
         const auto geom = second_order_factors.empty() ?
                             ShapeFunctions::FamilyGeometry<dim>() :
                             geometry(k);
+        // families this rank does not need have no data (initialize())
         for (unsigned int a = 0; a < master[k].size(); ++a)
           {
             Tensor<1, dim> c = phi[k][a] * alpha[k];
@@ -195,6 +222,8 @@ namespace pg
   FamilyElements<dim>::correction_function_values(const unsigned int k) const
   {
     AssertIndexRange(k, phi.size());
+    Assert(!phi[k].empty(),
+           ExcMessage("Family data not computed on this rank (initialize())."));
     return phi[k];
   }
 
@@ -205,6 +234,8 @@ namespace pg
   FamilyElements<dim>::master_gradients(const unsigned int k) const
   {
     AssertIndexRange(k, master.size());
+    Assert(!master[k].empty(),
+           ExcMessage("Family data not computed on this rank (initialize())."));
     return master[k];
   }
 

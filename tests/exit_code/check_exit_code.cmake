@@ -1,6 +1,7 @@
 # Run pg_solve on ${PRM}; require exit code 1 and a message matching
-# ${EXPECT} on standard error. Used by the exit_code tests.
-execute_process(COMMAND ${PG_SOLVE} ${PRM}
+# ${EXPECT} on standard error. Used by the exit_code tests; ${LAUNCHER} (if
+# set) is the MPI launcher, e.g. "mpiexec;-np;2".
+execute_process(COMMAND ${LAUNCHER} ${PG_SOLVE} ${PRM}
                 RESULT_VARIABLE code
                 OUTPUT_VARIABLE out
                 ERROR_VARIABLE err)

@@ -124,6 +124,13 @@ namespace pg
     /** relevant_dofs: the DoFs this rank reads (dofs/relevant_dofs.h). */
     void
     compute_relevant_dofs();
+
+    /**
+     * The families whose FamilyElements data this rank needs (empty: all,
+     * as on one rank): see FamilyElements::initialize().
+     */
+    std::vector<bool>
+    needed_families(const FormulationCode &formulation) const;
   };
 } // namespace pg
 

@@ -40,13 +40,26 @@ namespace pg
                    const double               weight_exponent);
 
     /**
-     * Compute the gradients at the master of every family (the PPG test
-     * functions, and the trial gradient at the particle used for output and
-     * error norms). Throws ExcSingularFamily for a family whose moment
-     * matrix is singular or ill-conditioned.
+     * Compute the gradients at the master of the families flagged in
+     * @p needed (all if it is empty): the PPG test functions, and the trial
+     * gradient at the particle used for output and error norms. A rank needs
+     * its owned families and their members (PPG1 reads g^{jjk} of member j);
+     * the data of other families stay empty. Throws ExcSingularFamily for a
+     * family whose moment matrix is singular or ill-conditioned.
      */
     void
-    initialize();
+    initialize(const std::vector<bool> &needed = {});
+
+    /**
+     * Throw ExcSingularFamily if the moment matrix of family @p k is singular
+     * or ill-conditioned at its master (@p master_only, the check of
+     * initialize()) or at any of its points (that of build()). Needs no data
+     * of initialize():
+     * every rank can repeat the check of a family another rank rejected, so
+     * that all ranks stop with the same message.
+     */
+    void
+    check_family(const unsigned int k, const bool master_only) const;
 
     /**
      * Build the table of family @p k (throws like initialize()). After
@@ -136,7 +149,7 @@ namespace pg
     const FormulationCode      formulation;
     const ShapeFunctions::Base base;
     const double               weight_exponent;
-    /** Trial gradients at the master of every family. */
+    /** Trial gradients at the master of every needed family. */
     std::vector<std::vector<Tensor<1, dim>>> master;
     /** Test gradients at the master (PPG): the trial ones, VC-corrected. */
     std::vector<std::vector<Tensor<1, dim>>> master_test;
