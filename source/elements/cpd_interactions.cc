@@ -500,6 +500,24 @@ namespace pg
 
 
   template <int dim>
+  std::vector<std::pair<unsigned int, unsigned int>>
+  CpdInteractions<dim>::coupled_members(const unsigned int k) const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> pairs;
+    for (unsigned int order = 1; order < 3; ++order)
+      for (std::size_t e = offsets[order][k]; e < offsets[order][k + 1]; ++e)
+        for (unsigned int m = 0; m <= order; ++m)
+          for (unsigned int l = m + 1; l <= order; ++l)
+            pairs.emplace_back(vertices[order][(order + 1) * e + m],
+                               vertices[order][(order + 1) * e + l]);
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    return pairs;
+  }
+
+
+
+  template <int dim>
   std::array<double, 4>
   CpdInteractions<dim>::point_quadrature(const unsigned int v) const
   {

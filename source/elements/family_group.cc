@@ -196,10 +196,24 @@ namespace pg
                               const AffineConstraints<double> &constraints,
                               DynamicSparsityPattern          &sparsity) const
   {
-    // one horizon: particle k couples to its neighbours only (the zero
-    // blocks of the family's local matrix are not added)
+    // Particle k couples to its neighbours (its row and column), and the
+    // vertices j, l of its triangles and tetrahedra to each other. On one
+    // rank the j-l entries also come from family j (j and l are
+    // neighbours); on more, a rank writes them into rows it may not own,
+    // so they must be in its own pattern.
     std::vector<types::global_dof_index> dofs;
     this->get_dof_indices(e, dofs);
+    std::vector<types::global_dof_index> block(2 * dim);
+    for (const auto &[p, q] :
+         interactions.coupled_members(this->owned_families[e]))
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            block[c]       = dofs[p * dim + c];
+            block[dim + c] = dofs[q * dim + c];
+          }
+        constraints.add_entries_local_to_global(block, sparsity, true);
+      }
     const std::vector<types::global_dof_index> row(dofs.begin(),
                                                    dofs.begin() + dim);
     constraints.add_entries_local_to_global(row, dofs, sparsity, true);

@@ -148,6 +148,15 @@ namespace pg
     n_interactions(const unsigned int k) const;
 
     /**
+     * The pairs (p, q), p < q, of members of family @p k (positions in
+     * families.members(k), both > 0) that a triangle or tetrahedron of the
+     * family couples: the entries of its local matrix besides the master's
+     * row and column (for the sparsity pattern).
+     */
+    std::vector<std::pair<unsigned int, unsigned int>>
+    coupled_members(const unsigned int k) const;
+
+    /**
      * The ordered contributing tuples #N_1, #N_2, #N_3 at particle @p v
      * (eqs. 29, 32, 34) and its horizon volume V_H^v.
      */
