@@ -192,13 +192,25 @@ namespace pg
 
       // The corners and subdivisions matter only for the meshes that use
       // them; 'Mesh = file' in 3-D must not need 3-coordinate defaults.
-      AssertThrow(geometry.mesh != "hyper rectangle" ||
-                    (geometry.lower_corner.size() == dim &&
-                     geometry.upper_corner.size() == dim),
-                  ExcBadParameter("Geometry/Lower corner",
-                                  "",
-                                  "'Lower corner' and 'Upper corner' need " +
-                                    std::to_string(dim) + " coordinates."));
+      if (geometry.mesh == "hyper rectangle")
+        for (const auto &[name, corner] :
+             {std::make_pair("Lower corner", &geometry.lower_corner),
+              std::make_pair("Upper corner", &geometry.upper_corner)})
+          {
+            std::string value;
+            for (const double x : *corner)
+              value += (value.empty() ? "" : ", ") + Utilities::to_string(x);
+            AssertThrow(corner->size() == dim,
+                        ExcBadParameter(std::string("Geometry/") + name,
+                                        value,
+                                        "a corner of the hyper rectangle "
+                                        "needs " +
+                                          std::to_string(dim) +
+                                          " coordinates ('set Dimension = " +
+                                          std::to_string(dim) + "'), e.g. " +
+                                          (dim == 2 ? "'0, 0'." :
+                                                      "'0, 0, 0'.")));
+          }
       AssertThrow((geometry.mesh != "hyper rectangle" &&
                    geometry.mesh != "cook membrane") ||
                     geometry.subdivisions.size() == 1 ||

@@ -569,11 +569,32 @@ namespace pg
         GridGenerator::create_triangulation_with_removed_cells(full,
                                                                removed,
                                                                triangulation);
-        // the new boundary: faces on the (closed) box
+        // create_triangulation_with_removed_cells() sets every boundary id
+        // to 0: colorize the outer faces again (0: x = min, 1: x = max, ...)
+        // and give the faces on the (closed) box id 2*dim.
+        const double tolerance = 1e-10 * GridTools::diameter(triangulation);
         for (const auto &cell : triangulation.active_cell_iterators())
           for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() && hole.contains_point(face->center()))
-              face->set_boundary_id(2 * dim);
+            if (face->at_boundary())
+              {
+                const Point<dim> c = face->center();
+                if (hole.contains_point(c))
+                  {
+                    face->set_boundary_id(2 * dim);
+                    continue;
+                  }
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    const double lower = std::min(parameters.lower_corner[d],
+                                                  parameters.upper_corner[d]);
+                    const double upper = std::max(parameters.lower_corner[d],
+                                                  parameters.upper_corner[d]);
+                    if (std::abs(c[d] - lower) < tolerance)
+                      face->set_boundary_id(2 * d);
+                    else if (std::abs(c[d] - upper) < tolerance)
+                      face->set_boundary_id(2 * d + 1);
+                  }
+              }
       }
     } // namespace
 
@@ -639,6 +660,28 @@ namespace pg
       std::vector<bool> meshfree(triangulation.n_active_cells(), false);
       for (const auto &cell : triangulation.active_cell_iterators())
         meshfree[cell->active_cell_index()] = region.contains(cell);
+      // 'none' asks for Q1 everywhere; any other region must hold a cell
+      if (Utilities::trim(parameters.meshfree_region) != "none" &&
+          std::none_of(meshfree.begin(), meshfree.end(), [](const bool m) {
+            return m;
+          }))
+        {
+          const auto box = GridTools::compute_bounding_box(triangulation);
+          std::ostringstream corners;
+          corners << "(" << box.get_boundary_points().first << ") and ("
+                  << box.get_boundary_points().second << ")";
+          AssertThrow(false,
+                      ExcBadParameter(
+                        "Geometry/Meshfree region",
+                        parameters.meshfree_region,
+                        "it selects no cell of the mesh (no cell centre lies "
+                        "inside, or no cell has these material ids), and the "
+                        "run would be plain Q1 finite elements. The mesh lies "
+                        "between " +
+                          corners.str() +
+                          "; fix the region, or write 'none' for Q1 "
+                          "elements everywhere."));
+        }
       return meshfree;
     }
 

@@ -1,5 +1,6 @@
 #include <pg/base/exceptions.h>
 #include <pg/constraints/boundary_constraints.h>
+#include <pg/constraints/support_check.h>
 #include <pg/elements/family_group.h>
 #include <pg/elements/unit_stress_residual.h>
 #include <pg/postprocess/problem_view.h>
@@ -87,8 +88,18 @@ namespace pg
 
     compute_unit_stress_residual();
 
+    SupportCheck::check_boundary_ids(prm.boundary_conditions,
+                                     discretization.triangulation);
     make_constraints(constraints, false);
     make_constraints(zero_constraints, true);
+    // A quasi-static problem needs supports against every rigid motion of
+    // every part (dynamics and eigenmodes may float).
+    if (prm.analysis.type == "static" && !prm.time.dynamic())
+      SupportCheck::check_rigid_body_modes(discretization.dof_handler,
+                                           particles,
+                                           discretization.families,
+                                           zero_constraints,
+                                           owned_dofs);
 
     // The element groups: Q1 cells first, then the families (PG or CPD).
     q1_cells = std::make_unique<Q1CellGroup<dim>>(discretization.owned_fe_cells,

@@ -142,6 +142,30 @@ namespace
                             triangulation);
       print_mesh(triangulation);
     }
+
+    // 'Hole': the outer faces keep their colorized ids 0..2*dim-1 (the
+    // cells are rebuilt without the hole), the hole's faces get 2*dim.
+    // Expected: 2-D ids 0-3 of measure 3 each, id 4 of measure 4 (the
+    // 1 x 1 hole); 3-D ids 0-5 of 9, id 6 of 6.
+    deallog << "hyper rectangle with the hole box 1,1 : 2,2 (2-D) and "
+            << "1,1,1 : 2,2,2 (3-D), 3 subdivisions" << std::endl;
+    {
+      Triangulation<2> triangulation;
+      pg::Mesh::create_mesh(geometry("set Upper corner = 3, 3\n"
+                                     "set Subdivisions = 3\n"
+                                     "set Hole = box 1,1 : 2,2\n"),
+                            triangulation);
+      print_mesh(triangulation);
+    }
+    {
+      Triangulation<3> triangulation;
+      pg::Mesh::create_mesh(geometry("set Lower corner = 0, 0, 0\n"
+                                     "set Upper corner = 3, 3, 3\n"
+                                     "set Subdivisions = 3\n"
+                                     "set Hole = box 1,1,1 : 2,2,2\n"),
+                            triangulation);
+      print_mesh(triangulation);
+    }
   }
 
 
