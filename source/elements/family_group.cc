@@ -1,3 +1,4 @@
+#include <pg/base/global_reader.h>
 #include <pg/elements/family_group.h>
 
 namespace pg
@@ -63,9 +64,10 @@ namespace pg
                                std::vector<types::global_dof_index> &dofs,
                                std::vector<Tensor<1, dim>>          &y) const
   {
-    const unsigned int k       = owned_families[e];
-    const auto         members = families.members(k);
-    const unsigned int n       = members.size();
+    const unsigned int                k       = owned_families[e];
+    const auto                        members = families.members(k);
+    const unsigned int                n       = members.size();
+    const LinearAlgebra::GlobalReader u_at(u);
     dofs.resize(n * dim);
     y.resize(n);
     for (unsigned int b = 0; b < n; ++b)
@@ -73,7 +75,7 @@ namespace pg
         {
           dofs[b * dim + c] = particles.dof(members[b], c);
           y[b][c]           = particles.position(members[b])[c] -
-                    particles.position(k)[c] + u[dofs[b * dim + c]];
+                    particles.position(k)[c] + u_at[dofs[b * dim + c]];
         }
   }
 

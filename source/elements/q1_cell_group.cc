@@ -1,3 +1,4 @@
+#include <pg/base/global_reader.h>
 #include <pg/elements/q1_cell.h>
 #include <pg/elements/q1_cell_group.h>
 #include <pg/elements/quadrature_table.h>
@@ -115,10 +116,11 @@ namespace pg
     local.dofs.resize(n * dim);
     cell->get_dof_indices(local.dofs);
     scratch.y.resize(n);
+    const LinearAlgebra::GlobalReader u_at(u);
     for (unsigned int b = 0; b < n; ++b)
       for (unsigned int c = 0; c < dim; ++c)
-        scratch.y[b][c] =
-          cell->vertex(b)[c] - cell->vertex(0)[c] + u[local.dofs[b * dim + c]];
+        scratch.y[b][c] = cell->vertex(b)[c] - cell->vertex(0)[c] +
+                          u_at[local.dofs[b * dim + c]];
     assemble_element(scratch.table,
                      scratch.y,
                      material,
