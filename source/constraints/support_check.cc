@@ -2,12 +2,10 @@
 #include <pg/constraints/support_check.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/grid/grid_tools.h>
 
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <numeric>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -181,43 +179,41 @@ namespace pg
     {
       constexpr unsigned int n_modes = dim * (dim + 1) / 2;
 
-      // The vertex nodes of all cells (every rank knows all cells), keyed
-      // by their first DoF, with their position.
-      std::unordered_map<types::global_dof_index, unsigned int> node_of_dof;
-      std::unordered_map<types::global_dof_index, unsigned int>
-                              component_of_dof;
+      // The vertex nodes of all cells (every rank knows all cells) with
+      // their positions, and the node and component of every vertex DoF.
+      std::unordered_map<types::global_dof_index,
+                         std::pair<unsigned int, unsigned int>>
+                              node_of_dof;
       std::vector<Point<dim>> position;
       Parts                   parts;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
-          unsigned int first = numbers::invalid_unsigned_int;
+          unsigned int node_0 = numbers::invalid_unsigned_int;
           for (const unsigned int v : cell->vertex_indices())
             {
-              const auto [it, inserted] =
-                node_of_dof.emplace(cell->vertex_dof_index(v, 0),
-                                    position.size());
+              const auto [it, inserted] = node_of_dof.emplace(
+                cell->vertex_dof_index(v, 0),
+                std::make_pair(static_cast<unsigned int>(position.size()), 0u));
+              const unsigned int node = it->second.first;
               if (inserted)
                 {
-                  for (unsigned int c = 0; c < dim; ++c)
-                    {
-                      node_of_dof.emplace(cell->vertex_dof_index(v, c),
-                                          position.size());
-                      component_of_dof.emplace(cell->vertex_dof_index(v, c), c);
-                    }
+                  for (unsigned int c = 1; c < dim; ++c)
+                    node_of_dof.emplace(cell->vertex_dof_index(v, c),
+                                        std::make_pair(node, c));
                   position.push_back(cell->vertex(v));
-                  parts.parent.push_back(parts.parent.size());
+                  parts.parent.push_back(node);
                 }
-              if (first == numbers::invalid_unsigned_int)
-                first = it->second;
+              if (node_0 == numbers::invalid_unsigned_int)
+                node_0 = node;
               else
-                parts.join(first, it->second);
+                parts.join(node_0, node);
             }
         }
       // A family connects its master to its neighbours.
       for (unsigned int k = 0; k < families.n_families(); ++k)
         for (const unsigned int j : families.members(k))
-          parts.join(node_of_dof.at(particles.dof(k, 0)),
-                     node_of_dof.at(particles.dof(j, 0)));
+          parts.join(node_of_dof.at(particles.dof(k, 0)).first,
+                     node_of_dof.at(particles.dof(j, 0)).first);
 
       // Number the parts by their smallest node; centres and sizes.
       std::vector<unsigned int>                      part_of(position.size());
@@ -268,24 +264,22 @@ namespace pg
         return r[c];
       };
 
-      // G^T G of every part from the owned constrained DoFs.
+      // G^T G of every part from the owned constraint lines.
       std::vector<double> gram(n_parts * n_modes * n_modes, 0.);
-      for (const auto &[dof, a] : node_of_dof)
+      for (const auto &line : zero_constraints.get_lines())
         {
-          if (!owned_dofs.is_element(dof) ||
-              !zero_constraints.is_constrained(dof))
+          if (!owned_dofs.is_element(line.index))
             continue;
-          const unsigned int          c = component_of_dof.at(dof);
+          const auto [a, c] = node_of_dof.at(line.index);
           std::array<double, n_modes> g;
           for (unsigned int m = 0; m < n_modes; ++m)
             {
               g[m] = mode_value(a, c, m);
-              if (const auto *entries =
-                    zero_constraints.get_constraint_entries(dof))
-                for (const auto &[j, weight] : *entries)
-                  g[m] -=
-                    weight *
-                    mode_value(node_of_dof.at(j), component_of_dof.at(j), m);
+              for (const auto &[j, weight] : line.entries)
+                {
+                  const auto [b, d] = node_of_dof.at(j);
+                  g[m] -= weight * mode_value(b, d, m);
+                }
             }
           double *G = &gram[part_of[a] * n_modes * n_modes];
           for (unsigned int m = 0; m < n_modes; ++m)

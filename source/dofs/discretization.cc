@@ -93,55 +93,60 @@ namespace pg
             owned_families.push_back(k);
         const std::vector<bool> needed = needed_families(formulation);
         family_tables.resize(owned_families.size());
-        const MPI_Comm comm = triangulation.get_communicator();
-        if (Utilities::MPI::n_mpi_processes(comm) == 1)
+        // A family one rank rejects stops every rank, with the message one
+        // rank would give: the first family singular at its master, else
+        // the first singular at another point.
+        const MPI_Comm comm   = triangulation.get_communicator();
+        const bool     serial = (Utilities::MPI::n_mpi_processes(comm) == 1);
+        bool           failed = false;
+        try
           {
             family_elements->initialize(needed);
             for (unsigned int f = 0; f < owned_families.size(); ++f)
               family_elements->build(owned_families[f], family_tables[f]);
           }
-        else
+        catch (const ExcSingularFamily &)
           {
-            // A family one rank rejects stops every rank, with the message
-            // one rank would give: the first family singular at its master,
-            // else the first singular at another point.
-            bool failed = false;
-            try
-              {
-                family_elements->initialize(needed);
-                for (unsigned int f = 0; f < owned_families.size(); ++f)
-                  family_elements->build(owned_families[f], family_tables[f]);
-              }
-            catch (const ExcSingularFamily &)
-              {
-                failed = true;
-              }
-            if (Utilities::MPI::logical_or(failed, comm))
-              {
-                const auto first_rejected = [&](const bool master_only) {
-                  for (unsigned int k = 0; k < families.n_families(); ++k)
-                    if (master_only ?
-                          (needed.empty() || needed[k]) :
-                          owned_dofs.is_element(particles.dof(k, 0)))
-                      try
-                        {
-                          family_elements->check_family(k, master_only);
-                        }
-                      catch (const ExcSingularFamily &)
-                        {
-                          return k;
-                        }
-                  return numbers::invalid_unsigned_int;
-                };
-                for (const bool master_only : {true, false})
-                  {
-                    const unsigned int k =
-                      Utilities::MPI::min(first_rejected(master_only), comm);
-                    if (k != numbers::invalid_unsigned_int)
-                      family_elements->check_family(k, master_only);
-                  }
-                AssertThrow(false, ExcInternalError());
-              }
+            if (serial)
+              throw;
+            failed = true;
+          }
+        if (!serial && Utilities::MPI::logical_or(failed, comm))
+          {
+            // every rank repeats the checks: of its needed families at the
+            // master (initialize()), then of its owned ones (build())
+            const auto rejected = [&](const unsigned int k,
+                                      const bool         master_only) {
+              try
+                {
+                  family_elements->check_family(k, master_only);
+                  return false;
+                }
+              catch (const ExcSingularFamily &)
+                {
+                  return true;
+                }
+            };
+            unsigned int first = numbers::invalid_unsigned_int;
+            for (unsigned int k = 0; k < families.n_families(); ++k)
+              if ((needed.empty() || needed[k]) && rejected(k, true))
+                {
+                  first = k;
+                  break;
+                }
+            first = Utilities::MPI::min(first, comm);
+            if (first != numbers::invalid_unsigned_int)
+              family_elements->check_family(first, true);
+            for (const unsigned int k : owned_families)
+              if (rejected(k, false))
+                {
+                  first = k;
+                  break;
+                }
+            first = Utilities::MPI::min(first, comm);
+            if (first != numbers::invalid_unsigned_int)
+              family_elements->check_family(first, false);
+            AssertThrow(false, ExcInternalError());
           }
       }
     time_shape += timer.wall_time();

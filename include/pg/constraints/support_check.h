@@ -24,9 +24,10 @@ namespace pg
   namespace SupportCheck
   {
     /**
-     * Every boundary id named in 'Dirichlet', 'Neumann' and 'Boundary
+     * Every boundary id named in 'Dirichlet', 'Neumann' and 'Neumann
      * stress' (subsection 'Boundary conditions') must exist in the mesh, and
-     * no 'Neumann' id may also be a 'Dirichlet' id with every component
+     * no 'Neumann' or 'Neumann stress' id may also be a 'Dirichlet' id with
+     * every component
      * prescribed (the traction would do no work there). Throws
      * ExcBadParameter naming the entry and the ids the mesh has.
      */
