@@ -39,8 +39,17 @@ namespace pg
                    const MPI_Comm                        mpi_communicator,
                    std::ostream                         &out);
 
+    /**
+     * run_analysis(); an exception that ends it is recorded in summary.json
+     * ("status": "failed" and its message; the files of the steps before it
+     * stay as they were written) and passed on.
+     */
     void
     run();
+
+    /** Set up, then run the analysis of 'Analysis/Type'. */
+    void
+    run_analysis();
 
     /**
      * The discretization, the sample locations, the system, the assembly
@@ -287,11 +296,57 @@ namespace pg
   void
   Problem<dim>::Implementation::run()
   {
+    try
+      {
+        run_analysis();
+      }
+    catch (const std::exception &exc)
+      {
+        summary.converged    = false;
+        summary.stop_message = one_line(user_message(exc));
+        if (root)
+          try
+            {
+              write_summary_json(summary,
+                                 prm.output.directory + "/summary.json");
+            }
+          catch (const std::exception &)
+            {
+              // the directory cannot be written: the message on the
+              // screen is all there is
+            }
+        throw;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::run_analysis()
+  {
     total_timer.restart();
     postprocess_timer.reset();
-    if (root)
-      std::filesystem::create_directories(prm.output.directory);
-    MPI_Barrier(comm);
+    {
+      // made by rank 0; every rank learns whether that worked
+      std::string error;
+      if (root)
+        try
+          {
+            std::filesystem::create_directories(prm.output.directory);
+          }
+        catch (const std::filesystem::filesystem_error &exc)
+          {
+            error = exc.code().message();
+          }
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      AssertThrow(error.empty(),
+                  ExcBadParameter("Output/Directory",
+                                  prm.output.directory,
+                                  "it cannot be created (" + error +
+                                    "). Choose a directory that you can "
+                                    "write to."));
+    }
 
     AssertThrow(!prm.time.dynamic() || prm.analysis.type == "static",
                 ExcBadParameter("Time/Integrator",

@@ -16,14 +16,16 @@
 #
 # Usage (from the repository root; both build trees Release, with
 # applications/pg_solve/pg_solve and applications/pg_study/pg_study):
-#   sh doc/benchmarks/before_after.sh OLD_BUILD NEW_BUILD [repeats] > table.md
-# (repeats: default 3; one study run takes about 3.5 minutes here)
+#   sh doc/benchmarks/before_after.sh OLD_BUILD NEW_BUILD [repeats [study_repeats]] > table.md
+# (repeats: default 3; study_repeats: default repeats, 0 leaves the study
+# out; one study run takes about 3.5 minutes here)
 set -e
 OLD=$1/applications/pg_solve/pg_solve
 NEW=$2/applications/pg_solve/pg_solve
 OLD_STUDY=$1/applications/pg_study/pg_study
 NEW_STUDY=$2/applications/pg_study/pg_study
 REPEATS=${3:-3}
+STUDY_REPEATS=${4:-$REPEATS}
 [ -x "$OLD" ] && [ -x "$NEW" ] && [ -x "$OLD_STUDY" ] && [ -x "$NEW_STUDY" ] || {
   echo "usage: $0 OLD_BUILD NEW_BUILD [repeats]" >&2
   exit 1
@@ -97,12 +99,13 @@ end"
 done
 
 # The study: the file as it is, with its problem file found from $WORK.
+if [ "$STUDY_REPEATS" -gt 0 ]; then
 sed -e "s|= plate_with_hole_coupled.prm|= $(pwd)/prm/plate_with_hole_coupled.prm|" \
     -e "s|set Directory *= study_plate_with_hole|set Directory = $WORK/study|" \
     prm/plate_with_hole_study.prm > "$WORK/study.prm"
 : > "$WORK/study.old"
 : > "$WORK/study.new"
-for r in $(seq "$REPEATS"); do
+for r in $(seq "$STUDY_REPEATS"); do
   for which in old new; do
     [ "$which" = old ] && bin=$OLD_STUDY || bin=$NEW_STUDY
     rm -rf "$WORK/study"
@@ -115,5 +118,6 @@ done
 o=$(median < "$WORK/study.old")
 n=$(median < "$WORK/study.new")
 echo "| plate-with-hole study (levels 2-6), wall (s) | $(printf %.1f "$o") | $(printf %.1f "$n") | $(echo "$n $o" | awk '{ printf "%.3f", $1 / $2 }') |"
+fi
 echo
-echo "Medians of $REPEATS interleaved runs each; $(nproc) cores; $(date -u +%Y-%m-%d)."
+echo "Medians of $REPEATS interleaved runs each (the study: $STUDY_REPEATS); $(nproc) cores; $(date -u +%Y-%m-%d)."

@@ -22,15 +22,21 @@ namespace pg
   {
     unsigned int            dimension = 0;
     std::string             formulation;
-    unsigned int            n_particles       = 0;
-    unsigned int            n_fe_cells        = 0;
-    unsigned int            n_meshfree_cells  = 0;
-    unsigned int            n_families        = 0;
-    types::global_dof_index n_dofs            = 0;
-    std::size_t             matrix_nonzeros   = 0;
-    bool                    converged         = false;
-    unsigned int            load_steps        = 0;
-    unsigned int            newton_iterations = 0;
+    unsigned int            n_particles      = 0;
+    unsigned int            n_fe_cells       = 0;
+    unsigned int            n_meshfree_cells = 0;
+    unsigned int            n_families       = 0;
+    types::global_dof_index n_dofs           = 0;
+    std::size_t             matrix_nonzeros  = 0;
+    bool                    converged        = false;
+    /**
+     * Why the run stopped: empty while it runs and when it finished; the
+     * error message (user_message(), on one line) when an exception ended
+     * it after set-up (summary.json: "status" and "message").
+     */
+    std::string  stop_message;
+    unsigned int load_steps        = 0;
+    unsigned int newton_iterations = 0;
     /** |R| of every Newton iteration of the last (sub)step. */
     std::vector<double> newton_residuals_last_step;
     /** |R| of every Newton iteration of every converged (sub)step. */

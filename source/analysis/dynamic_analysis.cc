@@ -15,29 +15,20 @@ namespace pg
     DynamicAnalysis<dim>::particle_disorder() const
     {
       const ParticleSet<dim>     &particles = *this->view().particles;
-      const FamilySet<dim>       &families  = *this->view().families;
       const Vector<double>        u_full = this->view().gather_displacement();
-      const unsigned int          n      = particles.n_particles();
-      std::vector<Point<dim>>     X(n);
-      std::vector<Tensor<1, dim>> u(n);
-      std::vector<double>         V(n);
-      for (unsigned int k = 0; k < n; ++k)
-        {
-          X[k] = particles.position(k);
-          V[k] = particles.volume(k);
-          for (unsigned int c = 0; c < dim; ++c)
-            u[k][c] = u_full[particles.dof(k, c)];
-        }
-      std::vector<std::vector<unsigned int>> neighbours(n);
-      for (unsigned int k = 0; k < n; ++k)
-        for (const unsigned int j : families.members(k))
-          if (j != k)
-            neighbours[k].push_back(j);
+      std::vector<Tensor<1, dim>> u(particles.n_particles());
+      for (unsigned int k = 0; k < u.size(); ++k)
+        for (unsigned int c = 0; c < dim; ++c)
+          u[k][c] = u_full[particles.dof(k, c)];
       const double deviation =
-        TimeIntegration::local_fit_deviation(X, u, V, neighbours);
-      const double reference = disorder_reference > 0 ?
-                                 disorder_reference :
-                                 TimeIntegration::rms_about_mean(u, V);
+        TimeIntegration::local_fit_deviation(disorder_positions,
+                                             u,
+                                             disorder_volumes,
+                                             disorder_neighbours);
+      const double reference =
+        disorder_reference > 0 ?
+          disorder_reference :
+          TimeIntegration::rms_about_mean(u, disorder_volumes);
       return reference > 0 ? deviation / reference : 0.;
     }
 
@@ -128,6 +119,17 @@ namespace pg
                 u0[k][c] = u_all[particles.dof(k, c)];
             }
           disorder_reference = TimeIntegration::rms_about_mean(u0, V);
+          const FamilySet<dim> &families = *view.families;
+          disorder_volumes               = V;
+          disorder_positions.resize(u0.size());
+          disorder_neighbours.assign(u0.size(), {});
+          for (unsigned int k = 0; k < u0.size(); ++k)
+            {
+              disorder_positions[k] = particles.position(k);
+              for (const unsigned int j : families.members(k))
+                if (j != k)
+                  disorder_neighbours[k].push_back(j);
+            }
         }
       assemble_masses(*view.dof_handler,
                       *view.meshfree,

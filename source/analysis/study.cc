@@ -165,33 +165,6 @@ namespace pg
       namespace
       {
         /**
-         * The part of an exception message a user needs: deal.II's
-         * "Additional information" (without the stack trace), white space
-         * collapsed.
-         */
-        std::string
-        short_message(const std::string &what)
-        {
-          std::string       text = what;
-          const std::string key  = "Additional information:";
-          if (const auto at = text.find(key); at != std::string::npos)
-            text = text.substr(at + key.size());
-          if (const auto at = text.find("Stacktrace:"); at != std::string::npos)
-            text = text.substr(0, at);
-          std::string s;
-          for (const char c : text)
-            if (!std::isspace(static_cast<unsigned char>(c)))
-              s += c;
-            else if (!s.empty() && s.back() != ' ')
-              s += ' ';
-          while (!s.empty() && (s.back() == ' ' || s.back() == '-'))
-            s.pop_back();
-          return s;
-        }
-
-
-
-        /**
          * 'Problem file' of the study file @p filename, resolved against the
          * study file's directory; empty if not given.
          */
@@ -351,7 +324,7 @@ namespace pg
                         }
                       catch (const std::exception &e)
                         {
-                          run.failure = short_message(e.what());
+                          run.failure = one_line(user_message(e));
                           log << e.what() << std::endl;
                         }
 

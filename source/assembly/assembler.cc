@@ -1,4 +1,6 @@
 #include <pg/assembly/assembler.h>
+#include <pg/base/exceptions.h>
+#include <pg/base/global_reader.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/timer.h>
@@ -141,8 +143,32 @@ namespace pg
   {
     if (local.dofs.empty())
       return;
-    Vector<double> minus_residual(local.residual);
-    minus_residual *= -1.;
+    if (!(local.with_matrix && matrix != nullptr) && range_size > 0)
+      {
+        bool in_place = true;
+        for (const auto dof : local.dofs)
+          if (dof - range_first >= range_size || // also dof < range_first
+              constraints.is_constrained(dof))
+            {
+              in_place = false;
+              break;
+            }
+        if (in_place)
+          {
+            double *const rhs_values   = (*rhs).trilinos_vector()[0];
+            double *const force_values = (*force).trilinos_vector()[0];
+            for (unsigned int i = 0; i < local.dofs.size(); ++i)
+              {
+                const auto j = local.dofs[i] - range_first;
+                rhs_values[j] += -local.residual[i];
+                force_values[j] += local.residual[i];
+              }
+            return;
+          }
+      }
+    minus_residual.reinit(local.residual.size(), true);
+    for (unsigned int i = 0; i < local.residual.size(); ++i)
+      minus_residual[i] = -local.residual[i];
     if (local.with_matrix && matrix != nullptr)
       constraints.distribute_local_to_global(local.matrix,
                                              minus_residual,
@@ -185,6 +211,14 @@ namespace pg
     *rhs   = 0;
     *force = 0;
     failure.clear();
+    range_first = range_size = 0;
+    if (const auto &map = rhs->trilinos_vector().Map();
+        map.SameAs(force->trilinos_vector().Map()) &&
+        LinearAlgebra::is_index_range(map))
+      {
+        range_first = map.MinMyGID64();
+        range_size  = map.NumMyElements();
+      }
     const bool with_matrix = (matrix != nullptr);
 
     for (unsigned int g = 0; g < groups.size(); ++g)
@@ -225,17 +259,7 @@ namespace pg
             catch (const std::exception &e)
               {
                 local.dofs.clear();
-                // a deal.II exception's own message, without the source
-                // location
-                std::string       message = e.what();
-                const auto *const exc = dynamic_cast<const ExceptionBase *>(&e);
-                if (exc != nullptr)
-                  {
-                    std::ostringstream info;
-                    exc->print_info(info);
-                    message = Utilities::trim(info.str());
-                  }
-                record_failure(message);
+                record_failure(user_message(e));
               }
           },
           [this](const LocalSystem &local) { distribute(local); },

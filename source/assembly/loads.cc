@@ -13,6 +13,17 @@ namespace pg
 
   template <int dim>
   bool
+  Loads<dim>::any() const
+  {
+    const auto &bc = parameters.boundary_conditions;
+    return !parameters.zero_body_force || !bc.neumann.empty() ||
+           !bc.neumann_stress.empty();
+  }
+
+
+
+  template <int dim>
+  bool
   Loads<dim>::is_neumann(const types::boundary_id id) const
   {
     const auto &bc = parameters.boundary_conditions;

@@ -147,6 +147,9 @@ namespace pg
   void
   ParticleLoads<dim>::add_to(Assembler<dim> &assembler) const
   {
+    // no body force and no traction: every particle load is zero
+    if (!loads.any())
+      return;
     Vector<double>                       load(dim);
     std::vector<types::global_dof_index> dofs(dim);
     for (const unsigned int k : owned_families)

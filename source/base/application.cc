@@ -1,7 +1,9 @@
 #include <pg/base/application.h>
+#include <pg/base/exceptions.h>
 
 #include <deal.II/base/mpi.h>
 
+#include <cstdlib>
 #include <iostream>
 
 namespace pg
@@ -42,12 +44,18 @@ namespace pg
       }
     catch (std::exception &exc)
       {
+        // A user reads what went wrong and how to fix it; the source
+        // location and deal.II's stack trace only on request.
         std::cerr << std::endl
                   << "----------------------------------------------------"
                   << std::endl
                   << "Exception on processing: " << std::endl
-                  << exc.what() << std::endl
-                  << "Aborting!" << std::endl
+                  << user_message(exc) << std::endl;
+        if (std::getenv("PG_ERROR_DETAILS") != nullptr)
+          std::cerr << std::endl
+                    << "Details (PG_ERROR_DETAILS is set):" << std::endl
+                    << exc.what() << std::endl;
+        std::cerr << "Aborting!" << std::endl
                   << "----------------------------------------------------"
                   << std::endl;
         return abort();

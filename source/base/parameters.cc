@@ -2,16 +2,79 @@
 #include <pg/base/parameters.h>
 
 #include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 namespace pg
 {
   namespace Parameters
   {
+    namespace
+    {
+      /**
+       * function.parse_parameters(prm) in the subsection @p path, and one
+       * evaluation at the origin (muParser parses an expression when it is
+       * first evaluated): a wrong number of expressions, a syntax error or
+       * an unknown name is reported for the entry '@p path/Function
+       * expression' with its value, before any work is done. deal.II's own
+       * report of a parser error on std::cerr is held back; the message
+       * carries it.
+       */
+      template <int dim>
+      void
+      parse_function(ParameterHandler               &prm,
+                     Functions::ParsedFunction<dim> &function,
+                     const std::string              &path)
+      {
+        const std::string entry      = path + "/Function expression";
+        const std::string expression = prm.get("Function expression");
+        const std::string how =
+          " Write one expression in x, y" + std::string(dim == 3 ? ", z" : "") +
+          " and t per component, separated by ';' (constants in 'Function "
+          "constants', e.g. 'E=1, nu=0.3').";
+        std::string error;
+        try
+          {
+            function.parse_parameters(prm);
+          }
+        catch (const std::exception &exc)
+          {
+            error = one_line(user_message(exc));
+          }
+        AssertThrow(error.empty(),
+                    ExcBadParameter(entry,
+                                    expression,
+                                    "deal.II's FunctionParser rejects it: " +
+                                      error + how));
+        std::ostringstream    held_back;
+        std::streambuf *const screen = std::cerr.rdbuf(held_back.rdbuf());
+        try
+          {
+            Vector<double> values(function.n_components);
+            function.vector_value(Point<dim>(), values);
+          }
+        catch (const std::exception &exc)
+          {
+            error = one_line(user_message(exc));
+          }
+        std::cerr.rdbuf(screen);
+        if (!error.empty() && error.back() != '.')
+          error += '.';
+        AssertThrow(error.empty(),
+                    ExcBadParameter(entry,
+                                    expression,
+                                    "muParser cannot evaluate it: " + error +
+                                      how));
+      }
+    } // namespace
+
+
+
     template <int dim>
     AllParameters<dim>::AllParameters()
       : dimension(dim)
@@ -112,16 +175,20 @@ namespace pg
       prm.enter_subsection("Boundary conditions");
       {
         prm.enter_subsection("Prescribed displacement");
-        prescribed_displacement.parse_parameters(prm);
+        parse_function(prm,
+                       prescribed_displacement,
+                       "Boundary conditions/Prescribed displacement");
         prm.leave_subsection();
         prm.enter_subsection("Traction");
-        traction.parse_parameters(prm);
+        parse_function(prm, traction, "Boundary conditions/Traction");
         prm.leave_subsection();
         prm.enter_subsection("Boundary stress");
-        boundary_stress.parse_parameters(prm);
+        parse_function(prm,
+                       boundary_stress,
+                       "Boundary conditions/Boundary stress");
         prm.leave_subsection();
         prm.enter_subsection("Body force");
-        body_force.parse_parameters(prm);
+        parse_function(prm, body_force, "Boundary conditions/Body force");
         {
           // every component the literal 0: assembly skips the evaluation
           const std::vector<std::string> components =
@@ -138,7 +205,7 @@ namespace pg
       prm.leave_subsection();
       prm.enter_subsection("Exact solution");
       {
-        exact_solution.parse_parameters(prm);
+        parse_function(prm, exact_solution, "Exact solution");
         compute_errors             = prm.get_bool("Compute errors");
         const std::string gradient = prm.get("Gradient expression");
         exact_gradient.reset();
@@ -182,10 +249,10 @@ namespace pg
       prm.enter_subsection("Time");
       {
         prm.enter_subsection("Initial displacement");
-        initial_displacement.parse_parameters(prm);
+        parse_function(prm, initial_displacement, "Time/Initial displacement");
         prm.leave_subsection();
         prm.enter_subsection("Initial velocity");
-        initial_velocity.parse_parameters(prm);
+        parse_function(prm, initial_velocity, "Time/Initial velocity");
         prm.leave_subsection();
       }
       prm.leave_subsection();

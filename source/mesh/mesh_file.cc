@@ -28,14 +28,15 @@ namespace pg
       /** The message for a mesh file that GridIn cannot read. */
       std::string
       unreadable_file_message(const std::string &file_name,
-                              const std::string &reason)
+                              const std::string &reason,
+                              const std::string &hint =
+                                "Check the path (relative paths start in "
+                                "the working directory).")
       {
         return "The mesh file " + file_name +
                " given as 'File name' in subsection 'Geometry' cannot be "
                "read: " +
-               reason +
-               ". Check the path (relative paths start in the working "
-               "directory).";
+               reason + ". " + hint;
       }
 
 
@@ -279,8 +280,7 @@ namespace pg
                     file_name,
                     "it does not exist or cannot be opened")));
 
-      // GridIn's own message says what is wrong inside the file; print_info
-      // gives it without the source location that what() adds.
+      // GridIn's own message says what is wrong inside the file.
       std::string reason;
       try
         {
@@ -288,27 +288,43 @@ namespace pg
           grid_in.attach_triangulation(triangulation);
           grid_in.read(input, format);
         }
-      catch (const ExceptionBase &exc)
-        {
-          std::ostringstream s;
-          exc.print_info(s);
-          reason = "deal.II's GridIn reports: " + Utilities::trim(s.str());
-        }
       catch (const std::exception &exc)
         {
-          reason = "deal.II's GridIn reports: " +
-                   Utilities::trim(std::string(exc.what()));
+          reason = "deal.II's GridIn reports: " + user_message(exc);
         }
       while (!reason.empty() && reason.back() == '.')
         reason.pop_back();
+      const std::string contents_hint =
+        "Check the file's format and contents (Gmsh and ParaView open it).";
       AssertThrow(reason.empty(),
-                  ExcMessage(unreadable_file_message(file_name, reason)));
+                  ExcMessage(
+                    unreadable_file_message(file_name, reason, contents_hint)));
       AssertThrow(triangulation.n_active_cells() > 0,
                   ExcMessage(unreadable_file_message(
                     file_name,
-                    "it contains no cells of dimension " +
-                      std::to_string(dim))));
+                    "it contains no cells of dimension " + std::to_string(dim),
+                    contents_hint)));
       handle_coincident_vertices(parameters, triangulation, notes);
+
+      // A cell without area (volume) has no shape function gradients; the
+      // assembly would stop in Newton with det F = NaN.
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          const double measure = cell->measure();
+          AssertThrow(measure > 1e-12 * std::pow(cell->diameter(), dim),
+                      ExcMessage(
+                        "Cell " + std::to_string(cell->active_cell_index()) +
+                        " of the mesh file " + file_name +
+                        " (given as 'File name' in subsection 'Geometry'), "
+                        "with its centre at " +
+                        format_point(cell->center()) + ", has " +
+                        (dim == 2 ? "an area" : "a volume") + " of " +
+                        std::to_string(measure) + ": its vertices lie " +
+                        (dim == 2 ? "on a line" : "in a plane") +
+                        " or coincide. Fix the cell in the mesh: pg needs "
+                        "cells of positive " +
+                        (dim == 2 ? "area." : "volume.")));
+        }
     }
 
 

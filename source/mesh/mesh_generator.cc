@@ -1,6 +1,7 @@
 #include <pg/base/exceptions.h>
 #include <pg/mesh/mesh_file.h>
 #include <pg/mesh/mesh_generator.h>
+#include <pg/mesh/meshfree_region.h>
 
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/point.h>
@@ -38,23 +39,6 @@ namespace pg
         for (unsigned int i = 0; i < values.size(); ++i)
           s << (i > 0 ? ", " : "") << values[i];
         return s.str();
-      }
-
-
-
-      /**
-       * The whole of @p text as one number. Utilities::string_to_double()
-       * accepts trailing garbage such as '1x', which should be an error here.
-       */
-      bool
-      read_number(const std::string &text, double &value)
-      {
-        std::istringstream s(text);
-        s >> value;
-        if (s.fail())
-          return false;
-        s >> std::ws;
-        return s.eof();
       }
 
 
@@ -381,162 +365,6 @@ namespace pg
 
 
 
-      /** A parsed 'Meshfree region'. */
-      template <int dim>
-      struct MeshfreeRegion
-      {
-        enum class Kind
-        {
-          all,
-          none,
-          material_ids,
-          box,
-          ball
-        };
-
-        Kind                            kind = Kind::all;
-        std::vector<types::material_id> material_ids;
-        Point<dim>                      lower;
-        Point<dim>                      upper;
-        Point<dim>                      centre;
-        double                          radius = 0.;
-
-        /**
-         * Whether the centre of @p cell is in the region. Box and ball are
-         * closed, with a tolerance of 1e-10 of their size, so that centres on
-         * their boundary count despite round-off.
-         */
-        bool
-        contains(
-          const typename Triangulation<dim>::active_cell_iterator &cell) const
-        {
-          switch (kind)
-            {
-              case Kind::all:
-                return true;
-              case Kind::none:
-                return false;
-              case Kind::material_ids:
-                return std::find(material_ids.begin(),
-                                 material_ids.end(),
-                                 cell->material_id()) != material_ids.end();
-              case Kind::box:
-              case Kind::ball:
-                return contains_point(cell->center());
-            }
-          return false;
-        }
-
-        /** Whether @p p lies in the box or ball (closed, as above). */
-        bool
-        contains_point(const Point<dim> &p) const
-        {
-          if (kind == Kind::ball)
-            return p.distance(centre) <= radius * (1. + 1e-10);
-          const double tolerance = 1e-10 * lower.distance(upper);
-          for (unsigned int d = 0; d < dim; ++d)
-            if (p[d] < lower[d] - tolerance || p[d] > upper[d] + tolerance)
-              return false;
-          return true;
-        }
-      };
-
-
-
-      /** Whether @p text starts with @p word; @p rest gets the remainder. */
-      bool
-      starts_with(const std::string &text,
-                  const std::string &word,
-                  std::string       &rest)
-      {
-        if (text.compare(0, word.size(), word) != 0)
-          return false;
-        rest = text.substr(word.size());
-        return true;
-      }
-
-
-
-      template <int dim>
-      MeshfreeRegion<dim>
-      parse_meshfree_region(
-        const std::string &text,
-        const std::string &entry = "Geometry/Meshfree region")
-      {
-        const ExcBadParameter bad_region(
-          entry,
-          text,
-          "it must read 'all', 'none', 'material ids 1,2', 'box x0,y0 : "
-          "x1,y1' or 'ball cx,cy : r' with " +
-            std::to_string(dim) + " coordinates per point.");
-
-        // dim comma-separated numbers
-        const auto read_point = [&](const std::string &words) {
-          const std::vector<std::string> coordinates =
-            Utilities::split_string_list(words, ',');
-          AssertThrow(coordinates.size() == dim, bad_region);
-          Point<dim> point;
-          for (unsigned int d = 0; d < dim; ++d)
-            AssertThrow(read_number(coordinates[d], point[d]), bad_region);
-          return point;
-        };
-
-        MeshfreeRegion<dim> region;
-        const std::string   trimmed = Utilities::trim(text);
-        std::string         rest;
-        if (trimmed == "all")
-          region.kind = MeshfreeRegion<dim>::Kind::all;
-        else if (trimmed == "none")
-          region.kind = MeshfreeRegion<dim>::Kind::none;
-        else if (starts_with(trimmed, "material ids", rest))
-          {
-            region.kind = MeshfreeRegion<dim>::Kind::material_ids;
-            for (const std::string &word :
-                 Utilities::split_string_list(rest, ','))
-              {
-                double id;
-                AssertThrow(read_number(word, id) && id >= 0. &&
-                              id < numbers::invalid_material_id &&
-                              id == std::floor(id),
-                            bad_region);
-                region.material_ids.push_back(
-                  static_cast<types::material_id>(id));
-              }
-            AssertThrow(!region.material_ids.empty(), bad_region);
-          }
-        else if (starts_with(trimmed, "box", rest))
-          {
-            region.kind = MeshfreeRegion<dim>::Kind::box;
-            const std::vector<std::string> corners =
-              Utilities::split_string_list(rest, ':');
-            AssertThrow(corners.size() == 2, bad_region);
-            const Point<dim> a = read_point(corners[0]);
-            const Point<dim> b = read_point(corners[1]);
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                region.lower[d] = std::min(a[d], b[d]);
-                region.upper[d] = std::max(a[d], b[d]);
-              }
-          }
-        else if (starts_with(trimmed, "ball", rest))
-          {
-            region.kind = MeshfreeRegion<dim>::Kind::ball;
-            const std::vector<std::string> parts =
-              Utilities::split_string_list(rest, ':');
-            AssertThrow(parts.size() == 2, bad_region);
-            region.centre = read_point(parts[0]);
-            AssertThrow(read_number(parts[1], region.radius) &&
-                          region.radius >= 0.,
-                        bad_region);
-          }
-        else
-          AssertThrow(false, bad_region);
-
-        return region;
-      }
-
-
-
       /**
        * 'Hole': remove the coarse cells whose centres lie in the box; the
        * faces of the hole get boundary id 2*dim.
@@ -547,7 +375,7 @@ namespace pg
                Triangulation<dim>         &triangulation)
       {
         const MeshfreeRegion<dim> hole =
-          parse_meshfree_region<dim>(parameters.hole, "Geometry/Hole");
+          MeshfreeRegion<dim>::parse(parameters.hole, "Geometry/Hole");
         AssertThrow(hole.kind == MeshfreeRegion<dim>::Kind::box,
                     ExcBadParameter("Geometry/Hole",
                                     parameters.hole,
@@ -655,7 +483,7 @@ namespace pg
                         const Triangulation<dim>   &triangulation)
     {
       const MeshfreeRegion<dim> region =
-        parse_meshfree_region<dim>(parameters.meshfree_region);
+        MeshfreeRegion<dim>::parse(parameters.meshfree_region);
 
       std::vector<bool> meshfree(triangulation.n_active_cells(), false);
       for (const auto &cell : triangulation.active_cell_iterators())

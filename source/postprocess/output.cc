@@ -232,6 +232,27 @@ namespace pg
 
 
 
+    /** @p text as a JSON string: quoted, with '"', '\\' and controls escaped.
+     */
+    std::string
+    json_string(const std::string &text)
+    {
+      std::ostringstream s;
+      s << '"';
+      for (const char c : text)
+        if (c == '"' || c == '\\')
+          s << '\\' << c;
+        else if (static_cast<unsigned char>(c) < 0x20)
+          s << "\\u" << std::hex << std::setw(4) << std::setfill('0')
+            << static_cast<int>(c) << std::dec;
+        else
+          s << c;
+      s << '"';
+      return s.str();
+    }
+
+
+
     std::string
     json_list(const std::vector<double> &values)
     {
@@ -261,6 +282,9 @@ namespace pg
         << "  \"n_dofs\": " << s.n_dofs << ",\n"
         << "  \"matrix_nonzeros\": " << s.matrix_nonzeros << ",\n"
         << "  \"converged\": " << (s.converged ? "true" : "false") << ",\n"
+        << "  \"status\": \""
+        << (s.stop_message.empty() ? "finished" : "failed") << "\",\n"
+        << "  \"message\": " << json_string(s.stop_message) << ",\n"
         << "  \"load_steps\": " << s.load_steps << ",\n"
         << "  \"newton_iterations\": " << s.newton_iterations << ",\n"
         << "  \"newton_residuals_last_step\": "

@@ -242,15 +242,24 @@ namespace pg
 
 
   template <int dim>
+  std::string
+  DiscreteSystem<dim>::reduced_failure() const
+  {
+    if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) == 0)
+      return "";
+    return failure.empty() ? "the assembly failed on another rank" : failure;
+  }
+
+
+
+  template <int dim>
   NewtonSolver::Operations
   DiscreteSystem<dim>::newton_operations()
   {
     NewtonSolver::Operations operations;
     operations.assemble = [this]() -> std::string {
       assemble(true);
-      if (Utilities::MPI::max(failure.empty() ? 0 : 1, comm) == 0)
-        return "";
-      return failure.empty() ? "the assembly failed on another rank" : failure;
+      return reduced_failure();
     };
     operations.residual_norm    = [this]() { return rhs.l2_norm(); };
     operations.solve_and_update = [this](double &energy) {
@@ -332,8 +341,7 @@ namespace pg
   DiscreteSystem<dim>::compute_external_force(LinearAlgebra::Vector &f_ext)
   {
     f_ext.reinit(discretization.owned_dofs, comm);
-    const auto &bc = prm.boundary_conditions;
-    if (prm.zero_body_force && bc.neumann.empty() && bc.neumann_stress.empty())
+    if (!loads.any())
       return;
     const LinearAlgebra::Vector u_saved = solution;
     solution                            = 0;

@@ -1,9 +1,9 @@
 #include <pg/solvers/time_integration.h>
 
 #include <deal.II/base/exceptions.h>
-#include <deal.II/lac/full_matrix.h>
 
-#include <array>
+#include <Eigen/Dense>
+
 #include <cmath>
 #include <cstdint>
 
@@ -123,31 +123,27 @@ namespace pg
             h = std::max(h, (X[j] - X[k]).norm());
           if (neighbours[k].size() < dim + 1 || h == 0)
             continue;
-          FullMatrix<double> G(dim + 1, dim + 1);
-          FullMatrix<double> rhs(dim + 1, dim);
+          Eigen::Matrix<double, dim + 1, dim + 1> G =
+            Eigen::Matrix<double, dim + 1, dim + 1>::Zero();
+          Eigen::Matrix<double, dim + 1, dim> rhs =
+            Eigen::Matrix<double, dim + 1, dim>::Zero();
           for (const unsigned int j : neighbours[k])
             {
-              std::array<double, dim + 1> p;
+              Eigen::Matrix<double, dim + 1, 1> p;
               p[0] = 1;
               for (unsigned int d = 0; d < dim; ++d)
                 p[d + 1] = (X[j][d] - X[k][d]) / h;
-              for (unsigned int a = 0; a <= dim; ++a)
-                {
-                  for (unsigned int b = 0; b <= dim; ++b)
-                    G(a, b) += p[a] * p[b];
-                  for (unsigned int c = 0; c < dim; ++c)
-                    rhs(a, c) += p[a] * u[j][c];
-                }
+              G.noalias() += p * p.transpose();
+              for (unsigned int c = 0; c < dim; ++c)
+                rhs.col(c) += p * u[j][c];
             }
-          FullMatrix<double> copy(G);
-          if (std::abs(copy.determinant()) < 1e-10 * std::pow(G(0, 0), dim + 1))
+          if (std::abs(G.determinant()) < 1e-10 * std::pow(G(0, 0), dim + 1))
             continue;
-          G.gauss_jordan();
           // the fit at X^k is the constant coefficient a = (G^-1 rhs)_0
-          Tensor<1, dim> fit;
+          const Eigen::Matrix<double, dim + 1, dim> a = G.inverse() * rhs;
+          Tensor<1, dim>                            fit;
           for (unsigned int c = 0; c < dim; ++c)
-            for (unsigned int b = 0; b <= dim; ++b)
-              fit[c] += G(0, b) * rhs(b, c);
+            fit[c] = a(0, c);
           sum += V[k] * (u[k] - fit).norm_square();
           volume += V[k];
         }

@@ -167,20 +167,37 @@ namespace pg
         u_old                   = system.displacement();
         const double          kinetic_constrained_old = kinetic_constrained;
         LinearAlgebra::Vector f_ext_old(f_ext), f_int_old(f_int);
-        if (!integrator.step(system, t_new, dt, v, a, f_ext, iterations))
+        // A step that fails (Newton, a NaN in an assembly, a load that
+        // cannot be evaluated) ends the run with the files of the steps
+        // before it written.
+        bool advanced = false;
+        try
+          {
+            advanced =
+              integrator.step(system, t_new, dt, v, a, f_ext, iterations);
+          }
+        catch (const std::exception &exc)
+          {
+            integrator.last_failure = one_line(user_message(exc));
+          }
+        if (!advanced)
           {
             system.displacement() = u_old;
             system.displacement_changed();
             operations.give_up(step - 1, t);
-            AssertThrow(false,
-                        ExcMessage(
-                          "The Newmark step to t = " + std::to_string(t_new) +
-                          " did not converge. Reduce 'Time step' in "
-                          "subsection 'Time', or increase 'Maximum "
-                          "iterations' in subsection 'Newton'. The results "
-                          "up to t = " +
-                          std::to_string(t) + " are in '" + output_directory +
-                          "'."));
+            const std::string &why = integrator.last_failure;
+            AssertThrow(
+              false,
+              ExcMessage(
+                "The " + time.integrator +
+                " step to t = " + std::to_string(t_new) + " failed" +
+                (why.empty() ? std::string(". ") : ": " + why + " ") +
+                (explicit_ || why.find("NaN or inf") != std::string::npos ?
+                   std::string() :
+                   "Reduce 'Time step' in subsection 'Time', or increase "
+                   "'Maximum iterations' in subsection 'Newton'. ") +
+                "The results up to t = " + std::to_string(t) + " are in '" +
+                output_directory + "'."));
           }
         t = t_new;
         result.newton_iterations += iterations;
@@ -201,10 +218,19 @@ namespace pg
         energies.support_work +=
           0.5 * (r_old * du) + kinetic_constrained - kinetic_constrained_old;
         r_old = r_new;
-        AssertThrow(std::isfinite(energies.kinetic),
-                    ExcMessage("The motion became unbounded at t = " +
-                               std::to_string(t) +
-                               ": reduce 'Time step' in subsection 'Time'."));
+        if (!std::isfinite(energies.kinetic))
+          {
+            system.displacement() = u_old;
+            system.displacement_changed();
+            operations.give_up(step - 1, t - dt);
+            AssertThrow(false,
+                        ExcMessage("The motion became unbounded at t = " +
+                                   std::to_string(t) +
+                                   ": reduce 'Time step' in subsection "
+                                   "'Time'. The results up to t = " +
+                                   std::to_string(t - dt) + " are in '" +
+                                   output_directory + "'."));
+          }
 
         if (step == n_steps || interval == 0. || t >= next_output - 1e-9 * dt)
           {

@@ -50,6 +50,14 @@ namespace pg
       TimeIntegration::Energies energies;
       /** RMS of the initial particle displacement about its mean. */
       double disorder_reference = 0;
+      /**
+       * The positions, volumes and neighbours (family members but the
+       * particle itself) of all particles, for particle_disorder(): set
+       * once in run().
+       */
+      std::vector<Point<dim>>                disorder_positions;
+      std::vector<double>                    disorder_volumes;
+      std::vector<std::vector<unsigned int>> disorder_neighbours;
     };
   } // namespace Analysis
 } // namespace pg

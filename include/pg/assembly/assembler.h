@@ -119,6 +119,20 @@ namespace pg
     LinearAlgebra::Vector       *force  = nullptr;
     std::mutex                   failure_mutex;
     std::string                  failure;
+    /**
+     * -residual of the local system being distributed (distribute() runs
+     * on one thread at a time: WorkStream's copier, the load term), kept to
+     * spare an allocation per element.
+     */
+    Vector<double> minus_residual;
+    /**
+     * This rank's entries of rhs and force as the global range [first,
+     * first + size) (always on one rank), or size 0: a residual-only local
+     * system of unconstrained DoFs in the range is then added in place,
+     * without the per-entry map lookups of the Trilinos wrappers (the same
+     * sums in the same order).
+     */
+    types::global_dof_index range_first = 0, range_size = 0;
   };
 } // namespace pg
 

@@ -23,6 +23,14 @@ namespace pg
   public:
     explicit Loads(const Parameters::AllParameters<dim> &parameters);
 
+    /**
+     * Does any load act: a body force other than the literal 0, or a
+     * boundary in 'Neumann' or 'Neumann stress'? Without one the loads
+     * need not be assembled.
+     */
+    bool
+    any() const;
+
     /** Is @p id in 'Neumann' or in 'Neumann stress'? */
     bool
     is_neumann(const types::boundary_id id) const;

@@ -16,8 +16,11 @@ namespace pg
    * argument or --help (-h) print @p usage (exit code 1 without arguments);
    * with --print-parameters print the entries @p declare declares, with
    * their documentation; otherwise return what @p run returns for the
-   * arguments. An exception is reported on std::cerr in deal.II's style,
-   * MPI is aborted when several ranks run, and the exit code is 1. Output
+   * arguments. An exception is reported on std::cerr by its message
+   * (user_message(): what went wrong and how to fix it); the source location
+   * and deal.II's stack trace follow only where the environment variable
+   * PG_ERROR_DETAILS is set. MPI is aborted when several ranks run, and the
+   * exit code is 1. Output
    * goes to rank 0 only.
    */
   int

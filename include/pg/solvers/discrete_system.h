@@ -168,7 +168,7 @@ namespace pg
     assemble_residual(const bool with_matrix) override
     {
       assemble(with_matrix);
-      return failure;
+      return reduced_failure();
     }
 
     LinearAlgebra::Vector &
@@ -236,6 +236,13 @@ namespace pg
      */
     void
     compute_external_force(LinearAlgebra::Vector &f_ext);
+
+    /**
+     * The failure of the last assembly on any rank: this rank's message,
+     * another rank's note, or empty on all ranks (collective).
+     */
+    std::string
+    reduced_failure() const;
 
     /** @p target += @p factor C^T y with C of zero_constraints. */
     void

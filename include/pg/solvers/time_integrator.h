@@ -33,9 +33,9 @@ namespace pg
                          LinearAlgebra::Vector &a) const = 0;
 
     /**
-     * One step; false if it did not converge (Newmark: Newton failed; the
-     * why is in last_failure()). Throws if an explicit step's assembly
-     * fails.
+     * One step; false if it failed (Newmark: Newton did not converge;
+     * leapfrog: the assembly failed), with the reason in last_failure. May
+     * throw if a load cannot be evaluated.
      */
     virtual bool
     step(MechanicalSystem      &system,

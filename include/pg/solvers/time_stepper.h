@@ -46,7 +46,10 @@ namespace pg
                          const double       t,
                          const unsigned int iterations)>
         output;
-      /** A Newmark step failed: write what has been computed. */
+      /**
+       * A step failed (or the motion became unbounded): write what has been
+       * computed up to step @p last_step at time @p t.
+       */
       std::function<void(const unsigned int last_step, const double t)> give_up;
     };
 

@@ -1,0 +1,10 @@
+// libFuzzer's entry point for pg::Fuzz::parameter_lists() (fuzz_targets.h);
+// built with -DPG_FUZZ=ON and clang (see README.md, "Fuzzing").
+#include "fuzz_targets.h"
+
+extern "C" int
+LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
+{
+  pg::Fuzz::parameter_lists(data, size);
+  return 0;
+}
