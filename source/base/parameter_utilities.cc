@@ -37,7 +37,15 @@ namespace pg
       std::vector<types::boundary_id> ids;
       for (const std::string &word : Utilities::split_string_list(text, ','))
         {
-          const int id = Utilities::string_to_int(word);
+          int id = -1;
+          try
+            {
+              id = Utilities::string_to_int(word);
+            }
+          catch (const ExceptionBase &)
+            {
+              // not a number: reported below, with the entry
+            }
           AssertThrow(id >= 0 && id < 255,
                       ExcBadParameter(entry,
                                       text,

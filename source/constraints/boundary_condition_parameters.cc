@@ -110,8 +110,14 @@ namespace pg
                          "each item must read 'boundary id: components', "
                          "e.g. '0: xy'."))
           {
-            const types::boundary_id id =
-              parse_ids(parts[0], "Boundary conditions/Dirichlet")[0];
+            const std::vector<types::boundary_id> ids =
+              parse_ids(parts[0], "Boundary conditions/Dirichlet");
+            AssertThrow(ids.size() == 1,
+                        ExcBadParameter("Boundary conditions/Dirichlet",
+                                        text,
+                                        "each item must read 'boundary id: "
+                                        "components', e.g. '0: xy'."));
+            const types::boundary_id id = ids[0];
             dirichlet.emplace_back(
               id,
               parse_components(parts[1],
