@@ -347,7 +347,9 @@ namespace pg
     solution                            = 0;
     assemble(false);
     solution = u_saved;
-    AssertThrow(failure.empty(), ExcMessage(failure));
+    // every rank stops alike (a load can fail on one rank's cells only)
+    const std::string reduced = reduced_failure();
+    AssertThrow(reduced.empty(), ExcMessage(reduced));
     f_ext = force;
     f_ext *= -1.;
   }

@@ -185,7 +185,9 @@ namespace pg
             system.displacement() = u_old;
             system.displacement_changed();
             operations.give_up(step - 1, t);
-            const std::string &why = integrator.last_failure;
+            std::string why = integrator.last_failure;
+            if (!why.empty() && why.back() != '.')
+              why += '.';
             AssertThrow(
               false,
               ExcMessage(
