@@ -1,10 +1,12 @@
 #include <pg/analysis/analysis.h>
+#include <pg/analysis/checkpoint.h>
 #include <pg/analysis/dynamic_analysis.h>
 #include <pg/analysis/eigenmode_analysis.h>
 #include <pg/analysis/inf_sup_analysis.h>
 #include <pg/analysis/static_analysis.h>
 #include <pg/base/exceptions.h>
 #include <pg/base/formulation_code.h>
+#include <pg/base/interruption.h>
 #include <pg/dofs/discretization.h>
 #include <pg/materials/material.h>
 #include <pg/postprocess/output.h>
@@ -19,6 +21,13 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/table_handler.h>
 #include <deal.II/base/timer.h>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 
 #include <filesystem>
 #include <optional>
@@ -37,7 +46,8 @@ namespace pg
   public:
     Implementation(const Parameters::AllParameters<dim> &parameters,
                    const MPI_Comm                        mpi_communicator,
-                   std::ostream                         &out);
+                   std::ostream                         &out,
+                   const bool                            restart = false);
 
     /**
      * run_analysis(); an exception that ends it is recorded in summary.json
@@ -101,8 +111,35 @@ namespace pg
     Analysis::Access<dim>
     analysis_access();
 
-    const Parameters::AllParameters<dim>     &prm;
-    const MPI_Comm                            comm;
+    /** What a checkpoint must match to be read by this run. */
+    Checkpoint::Signature
+    checkpoint_signature() const;
+
+    /**
+     * The problem's part of a checkpoint (Archive: a boost binary o- or
+     * iarchive): the progress in the summary, the statistics table, the
+     * PVD records, the displacement and the committed material history.
+     */
+    template <class Archive>
+    void
+    serialize_state(Archive &archive);
+
+    /** Access::checkpoint. */
+    void
+    checkpoint(const unsigned int        step,
+               const double              t,
+               const Checkpoint::Writer &analysis_state);
+
+    /** Access::restart. */
+    bool
+    restart_from_checkpoint(unsigned int             &step,
+                            double                   &t,
+                            const Checkpoint::Reader &analysis_state);
+
+    const Parameters::AllParameters<dim> &prm;
+    const MPI_Comm                        comm;
+    /** `pg_solve --restart`: continue from the checkpoint. */
+    const bool                                restart;
     const bool                                root;
     ConditionalOStream                        pcout;
     const FormulationCode                     formulation;
@@ -140,9 +177,11 @@ namespace pg
   Problem<dim>::Implementation::Implementation(
     const Parameters::AllParameters<dim> &parameters,
     const MPI_Comm                        mpi_communicator,
-    std::ostream                         &out)
+    std::ostream                         &out,
+    const bool                            restart)
     : prm(parameters)
     , comm(mpi_communicator)
+    , restart(restart)
     , root(Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , pcout(out, root)
     , formulation(parse_formulation_code(parameters.discretization.formulation))
@@ -287,7 +326,142 @@ namespace pg
       [this](const unsigned int step, const double t) {
         postprocess_timer.start();
         postprocessors.finalize(view(), {step, t, 0}, statistics, summary);
+      },
+      [this](const unsigned int        step,
+             const double              t,
+             const Checkpoint::Writer &analysis_state) {
+        checkpoint(step, t, analysis_state);
+      },
+      [this](unsigned int &step, double &t, const Checkpoint::Reader &state) {
+        return restart_from_checkpoint(step, t, state);
       }};
+  }
+
+
+
+  template <int dim>
+  Checkpoint::Signature
+  Problem<dim>::Implementation::checkpoint_signature() const
+  {
+    Checkpoint::Signature signature = {
+      {"dimension", std::to_string(dim)},
+      {"MPI ranks", std::to_string(Utilities::MPI::n_mpi_processes(comm))},
+      {"DoFs", std::to_string(discretization.dof_handler.n_dofs())},
+      {"families", std::to_string(summary.n_families)},
+      {"formulation", formulation.text},
+      {"analysis", prm.time.dynamic() ? prm.time.integrator : "static"}};
+    const auto text = [](const double x) {
+      std::ostringstream s;
+      s << std::setprecision(17) << x;
+      return s.str();
+    };
+    if (prm.time.dynamic())
+      {
+        signature["End time"]  = text(prm.time.end_time);
+        signature["Time step"] = text(prm.time.time_step);
+      }
+    else
+      signature["Load steps"] = std::to_string(prm.loading.load_steps);
+    return signature;
+  }
+
+
+
+  template <int dim>
+  template <class Archive>
+  void
+  Problem<dim>::Implementation::serialize_state(Archive &archive)
+  {
+    auto    &s = summary;
+    archive &s.load_steps &s.newton_iterations &s.converged &s
+      .newton_residuals &s.newton_residuals_last_step;
+    archive &s.assembly_cost.n_assemblies &s.assembly_cost.n_solves;
+    auto                                  &d = s.dynamics;
+    archive &d.integrator &d.time_step &d.stable_time_step &d.n_steps &d.time &d
+      .kinetic &d.internal_work &d.external_work &d.support_work &d.balance &d
+      .disorder;
+    archive &statistics;
+    archive &postprocessors.output();
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::Implementation::checkpoint(
+    const unsigned int        step,
+    const double              t,
+    const Checkpoint::Writer &analysis_state)
+  {
+    const int          signal   = Interruption::received(comm);
+    const unsigned int interval = prm.output.checkpoint_interval;
+    if (signal == 0 && (interval == 0 || step % interval != 0))
+      return;
+    const Checkpoint checkpoint(prm.output.directory, comm);
+    checkpoint.write(checkpoint_signature(),
+                     step,
+                     t,
+                     [&](boost::archive::binary_oarchive &archive) {
+                       serialize_state(archive);
+                       CheckpointData::save(archive, system.displacement());
+                       archive << system.history;
+                       if (analysis_state)
+                         analysis_state(archive);
+                     });
+    const std::string where =
+      (prm.time.dynamic() ? "time step " : "load step ") +
+      std::to_string(step) + (prm.time.dynamic() ? " (t = " : " (load factor ");
+    std::ostringstream at;
+    at << where << t << ")";
+    pcout << "  checkpoint after " << at.str() << " in '"
+          << checkpoint.directory() << "'" << std::endl;
+    if (signal != 0)
+      throw RunInterrupted(
+        signal,
+        "Stopped by " + Interruption::signal_name(signal) + " after " +
+          at.str() + ". The checkpoint is in '" + checkpoint.directory() +
+          "', the results written so far in '" + prm.output.directory +
+          "'. Continue with: pg_solve --restart <this parameter file>.");
+  }
+
+
+
+  template <int dim>
+  bool
+  Problem<dim>::Implementation::restart_from_checkpoint(
+    unsigned int             &step,
+    double                   &t,
+    const Checkpoint::Reader &analysis_state)
+  {
+    if (!restart)
+      return false;
+    const Checkpoint checkpoint(prm.output.directory, comm);
+    const auto       group_offsets = system.history.group_offsets();
+    const auto       point_offsets = system.history.point_offsets();
+    step                           = checkpoint.read(
+      checkpoint_signature(),
+      t,
+      [&](boost::archive::binary_iarchive &archive) {
+        serialize_state(archive);
+        CheckpointData::load(archive, system.displacement(), "displacement");
+        archive >> system.history;
+        AssertThrow(system.history.group_offsets() == group_offsets &&
+                      system.history.point_offsets() == point_offsets,
+                    ExcMessage("The material history of the checkpoint has "
+                                                         "other evaluation points than this run. "
+                                                         "Restart with the parameter file that wrote "
+                                                         "it."));
+        if (analysis_state)
+          analysis_state(archive);
+      });
+    system.displacement_changed();
+    std::ostringstream line;
+    line << "  restart after " << (prm.time.dynamic() ? "time" : "load")
+         << " step " << step << " ("
+         << (prm.time.dynamic() ? "t = " : "load factor ") << t << ") from '"
+         << checkpoint.directory() << "'";
+    pcout << line.str() << std::endl;
+    return true;
   }
 
 
@@ -299,10 +473,14 @@ namespace pg
     try
       {
         run_analysis();
+        summary.finished = true;
+        if (root)
+          write_summary_json(summary, prm.output.directory + "/summary.json");
       }
     catch (const std::exception &exc)
       {
         summary.converged    = false;
+        summary.interrupted  = dynamic_cast<const RunInterrupted *>(&exc);
         summary.stop_message = one_line(user_message(exc));
         if (root)
           try
@@ -370,9 +548,17 @@ namespace pg
         analysis =
           std::make_unique<Analysis::InfSupAnalysis<dim>>(analysis_access(),
                                                           set_up);
+        AssertThrow(!restart,
+                    ExcMessage("pg_solve --restart continues static and "
+                               "dynamic runs; an inf-sup analysis has no "
+                               "checkpoint. Run it without --restart."));
         analysis->run();
         return;
       }
+    AssertThrow(!restart || prm.analysis.type == "static",
+                ExcMessage("pg_solve --restart continues static and dynamic "
+                           "runs; an eigenmode analysis has no checkpoint. "
+                           "Run it without --restart."));
     setup();
     system.update_ghost_values();
     view();
@@ -402,9 +588,12 @@ namespace pg
   template <int dim>
   Problem<dim>::Problem(const Parameters::AllParameters<dim> &parameters,
                         const MPI_Comm                        mpi_communicator,
-                        std::ostream                         &out)
-    : implementation(
-        std::make_unique<Implementation>(parameters, mpi_communicator, out))
+                        std::ostream                         &out,
+                        const bool                            restart)
+    : implementation(std::make_unique<Implementation>(parameters,
+                                                      mpi_communicator,
+                                                      out,
+                                                      restart))
   {}
 
 
@@ -445,14 +634,17 @@ namespace pg
   {
     template <int dim>
     RunSummary
-    run_dim(const std::string &filename, const MPI_Comm comm, std::ostream &out)
+    run_dim(const std::string &filename,
+            const MPI_Comm     comm,
+            std::ostream      &out,
+            const bool         restart)
     {
       ParameterHandler prm;
       declare_all_parameters<dim>(prm);
       prm.parse_input(filename);
       Parameters::AllParameters<dim> parameters;
       parameters.parse_parameters(prm);
-      Problem<dim> problem(parameters, comm, out);
+      Problem<dim> problem(parameters, comm, out, restart);
       problem.run();
       return problem.summary();
     }
@@ -463,11 +655,12 @@ namespace pg
   RunSummary
   run_parameter_file(const std::string &filename,
                      const MPI_Comm     comm,
-                     std::ostream      &out)
+                     std::ostream      &out,
+                     const bool         restart)
   {
     const unsigned int dim = Parameters::read_dimension(filename);
-    return (dim == 2) ? run_dim<2>(filename, comm, out) :
-                        run_dim<3>(filename, comm, out);
+    return (dim == 2) ? run_dim<2>(filename, comm, out, restart) :
+                        run_dim<3>(filename, comm, out, restart);
   }
 
 

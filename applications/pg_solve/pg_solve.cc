@@ -1,6 +1,8 @@
 // pg_solve: run a pg parameter file.
 //
 //   pg_solve file.prm              solve
+//   pg_solve --restart file.prm    continue from the checkpoint in the
+//                                  output directory
 //   pg_solve --print-parameters    print every parameter with its
 //                                  documentation (2-D defaults) and exit
 //   pg_solve --validate file.prm   parse the file and exit
@@ -21,12 +23,16 @@ main(int argc, char *argv[])
     argc,
     argv,
     "Usage: pg_solve <file.prm>\n"
+    "       pg_solve --restart <file.prm>\n"
     "       pg_solve --validate <file.prm>\n"
     "       pg_solve --print-parameters\n"
     "       pg_solve --help\n"
     "Solves the quasi-static problem described by the parameter file and "
     "writes\nVTU/PVD files, statistics.txt and summary.json to 'Directory' in "
-    "subsection\n'Output' (default: results).\n",
+    "subsection\n'Output' (default: results). With --restart it continues "
+    "from the checkpoint\nthere (written every 'Checkpoint interval' steps "
+    "and when SIGINT or SIGTERM\nstops a run), with the same parameter file "
+    "on the same number of MPI ranks.\n",
     pg::declare_all_parameters<2>,
     [](const std::vector<std::string> &args, const bool root) {
       if (args[0] == "--validate")
@@ -42,6 +48,14 @@ main(int argc, char *argv[])
           prm.parse_input(args[1]);
           if (root)
             std::cout << args[1] << ": valid" << std::endl;
+          return 0;
+        }
+      if (args[0] == "--restart")
+        {
+          AssertThrow(args.size() == 2,
+                      ExcMessage("--restart needs a parameter file: "
+                                 "pg_solve --restart file.prm"));
+          pg::run_parameter_file(args[1], MPI_COMM_WORLD, std::cout, true);
           return 0;
         }
       pg::run_parameter_file(args[0], MPI_COMM_WORLD, std::cout);

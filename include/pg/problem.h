@@ -34,7 +34,13 @@ namespace pg
      * error message (user_message(), on one line) when an exception ended
      * it after set-up (summary.json: "status" and "message").
      */
-    std::string  stop_message;
+    std::string stop_message;
+    /**
+     * summary.json's "status": "running" until the analysis has finished
+     * ("finished"), "failed" with a stop_message, "interrupted" when SIGINT
+     * or SIGTERM stopped the run (after a checkpoint).
+     */
+    bool         finished = false, interrupted = false;
     unsigned int load_steps        = 0;
     unsigned int newton_iterations = 0;
     /** |R| of every Newton iteration of the last (sub)step. */
@@ -175,7 +181,8 @@ namespace pg
      */
     Problem(const Parameters::AllParameters<dim> &parameters,
             const MPI_Comm                        mpi_communicator,
-            std::ostream                         &out);
+            std::ostream                         &out,
+            const bool                            restart = false);
     ~Problem();
 
     /**
@@ -202,13 +209,15 @@ namespace pg
   declare_all_parameters(ParameterHandler &prm);
 
   /**
-   * What `pg_solve file.prm` does: read 'Dimension', parse the file, run.
-   * Returns the summary.
+   * What `pg_solve file.prm` does: read 'Dimension', parse the file, run
+   * (with @p restart: continue from the checkpoint in the output directory,
+   * `pg_solve --restart file.prm`). Returns the summary.
    */
   RunSummary
   run_parameter_file(const std::string &filename,
                      const MPI_Comm     mpi_communicator,
-                     std::ostream      &out);
+                     std::ostream      &out,
+                     const bool         restart = false);
 } // namespace pg
 
 #endif

@@ -4,6 +4,9 @@
 #include <pg/solvers/time_integrator.h>
 #include <pg/solvers/time_stepper.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+
 #include <memory>
 
 namespace pg
@@ -160,6 +163,47 @@ namespace pg
         summary.load_steps                 = step;
         summary.newton_residuals_last_step = integrator->last_residuals;
       };
+      // The state of the time loop and the velocity, acceleration, forces
+      // and energies it needs to continue (a checkpoint, a restart).
+      TimeStepper::State state;
+      state.reinit(owned_dofs, system.communicator());
+      const auto serialize_energies = [this](auto &archive) {
+        archive &energies.kinetic &energies.initial_kinetic &energies
+          .internal_work &energies.external_work &energies.support_work;
+      };
+      operations.step_accepted = [&](const TimeStepper::State &s) {
+        access.checkpoint(
+          s.step,
+          s.t,
+          [&](boost::archive::binary_oarchive &archive) {
+            archive << s;
+            for (const LinearAlgebra::Vector *x :
+                 std::initializer_list<const LinearAlgebra::Vector *>{&v,
+                                                                      &s.a,
+                                                                      &s.f_ext,
+                                                                      &s.f_int,
+                                                                      &s.r_old})
+              CheckpointData::save(archive, *x);
+            serialize_energies(archive);
+          });
+      };
+      unsigned int restart_step = 0;
+      double       restart_time = 0;
+      const bool   restarted    = access.restart(
+        restart_step,
+        restart_time,
+        [&](boost::archive::binary_iarchive &archive) {
+          archive >> state;
+          for (const auto &[x, name] :
+               std::vector<std::pair<LinearAlgebra::Vector *, std::string>>{
+                 {&v, "velocity"},
+                 {&state.a, "acceleration"},
+                 {&state.f_ext, "external force"},
+                 {&state.f_int, "internal force"},
+                 {&state.r_old, "reaction"}})
+            CheckpointData::load(archive, *x, name);
+          serialize_energies(archive);
+        });
       operations.output  = access.postprocess;
       operations.give_up = [&](const unsigned int last_step, const double t) {
         access.history.revert();
@@ -174,7 +218,9 @@ namespace pg
                v,
                energies,
                summary.dynamics.disorder,
-               operations);
+               operations,
+               state,
+               restarted);
       const unsigned int n_steps = result.n_steps;
       const double       t       = result.final_time;
 

@@ -26,7 +26,11 @@ namespace pg
       MechanicalSystem &system  = access.system;
       RunSummary       &summary = access.summary;
       summary.load_steps        = 0;
-      access.postprocess(0, 0., 0);
+      // the state after the last step done (step 0: the initial state)
+      unsigned int last_step = 0;
+      double       t0        = 0;
+      if (!access.restart(last_step, t0, {}))
+        access.postprocess(0, 0., 0);
 
       // The displacement of the last accepted (sub)step (zero at first).
       LinearAlgebra::Vector   converged(system.locally_owned_dofs(),
@@ -49,6 +53,7 @@ namespace pg
         summary.load_steps = step;
         summary.converged  = true;
         access.postprocess(step, t, iterations);
+        access.checkpoint(step, t, {});
       };
       stepping.give_up = [&](const unsigned int step, const double t) {
         summary.converged = false;
@@ -56,7 +61,7 @@ namespace pg
       };
       stepping.last_failure = last_failure;
       LoadStepper(prm.loading, prm.output.directory, access.pcout)
-        .run(stepping);
+        .run(stepping, last_step + 1);
       access.finalize(prm.loading.load_steps, 1.);
     }
 

@@ -1,5 +1,6 @@
 #include <pg/base/application.h>
 #include <pg/base/exceptions.h>
+#include <pg/base/interruption.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -40,7 +41,15 @@ namespace pg
               prm.print_parameters(std::cout, ParameterHandler::PRM);
             return 0;
           }
+        Interruption::install_handlers();
         return run(args, root);
+      }
+    catch (const RunInterrupted &exc)
+      {
+        // every rank stops here together (the signal was shared): no abort
+        if (root)
+          std::cerr << std::endl << exc.what() << std::endl;
+        return 128 + exc.signal();
       }
     catch (std::exception &exc)
       {

@@ -283,7 +283,11 @@ namespace pg
         << "  \"matrix_nonzeros\": " << s.matrix_nonzeros << ",\n"
         << "  \"converged\": " << (s.converged ? "true" : "false") << ",\n"
         << "  \"status\": \""
-        << (s.stop_message.empty() ? "finished" : "failed") << "\",\n"
+        << (s.interrupted           ? "interrupted" :
+            !s.stop_message.empty() ? "failed" :
+            s.finished              ? "finished" :
+                                      "running")
+        << "\",\n"
         << "  \"message\": " << json_string(s.stop_message) << ",\n"
         << "  \"load_steps\": " << s.load_steps << ",\n"
         << "  \"newton_iterations\": " << s.newton_iterations << ",\n"

@@ -55,6 +55,17 @@ namespace pg
                           Patterns::Integer(2),
                           "Number of equally spaced points on each of the "
                           "'Lines', both ends included.");
+        prm.declare_entry(
+          "Checkpoint interval",
+          "0",
+          Patterns::Integer(0),
+          "Write a checkpoint to <Directory>/checkpoint after every this "
+          "many accepted load steps (static) or time steps (dynamic); 0: "
+          "only when SIGINT (Ctrl-C) or SIGTERM stops the run, which always "
+          "writes one after the step it is in. 'pg_solve --restart "
+          "file.prm' continues from the checkpoint with the same parameter "
+          "file on the same number of MPI ranks and gives the results of a "
+          "run without interruption.");
       }
       prm.leave_subsection();
     }
@@ -111,7 +122,8 @@ namespace pg
                                           "' has equal ends."));
             lines.push_back(line);
           }
-        line_samples = prm.get_integer("Line samples");
+        line_samples        = prm.get_integer("Line samples");
+        checkpoint_interval = prm.get_integer("Checkpoint interval");
       }
       prm.leave_subsection();
       AssertThrow(!directory.empty(),

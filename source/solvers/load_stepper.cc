@@ -17,12 +17,14 @@ namespace pg
 
 
   void
-  LoadStepper::run(const Operations &operations) const
+  LoadStepper::run(const Operations  &operations,
+                   const unsigned int first_step) const
   {
     const unsigned int n_steps = parameters.load_steps;
-    double             t       = 0;
+    // the same expression as a step's target below: bit for bit
+    double t = static_cast<double>(first_step - 1) / n_steps;
     operations.commit();
-    for (unsigned int step = 1; step <= n_steps; ++step)
+    for (unsigned int step = first_step; step <= n_steps; ++step)
       {
         const double       target = static_cast<double>(step) / n_steps;
         double             dt     = target - t;

@@ -18,29 +18,22 @@ namespace pg
 
 
 
-  TimeStepper::Result
-  TimeStepper::run(MechanicalSystem          &system,
-                   TimeIntegrator            &integrator,
-                   const MassMatrices        &masses,
-                   LinearAlgebra::Vector     &v,
-                   TimeIntegration::Energies &energies,
-                   const std::vector<double> &disorder,
-                   const Operations          &operations) const
+  void
+  TimeStepper::State::reinit(const IndexSet &owned, const MPI_Comm comm)
   {
-    const bool     explicit_ = integrator.is_explicit();
-    const double   T         = time.end_time;
-    const MPI_Comm comm      = system.communicator();
-    const IndexSet owned     = system.locally_owned_dofs();
-    Result         result;
+    for (LinearAlgebra::Vector *x : {&a, &f_ext, &f_int, &r_old})
+      x->reinit(owned, comm);
+  }
 
-    // 1 at the constrained DoFs
-    LinearAlgebra::Vector constrained(owned, comm);
-    for (const auto i : owned)
-      if (system.homogeneous_constraints().is_constrained(i))
-        constrained(i) = 1.;
-    constrained.compress(VectorOperation::insert);
 
-    // The stable step from the tangent of the initial state.
+
+  void
+  TimeStepper::choose_time_step(MechanicalSystem   &system,
+                                const MassMatrices &masses,
+                                const bool          explicit_,
+                                Result             &result) const
+  {
+    const double T = time.end_time;
     {
       const std::string failure = system.assemble_residual(true);
       AssertThrow(failure.empty(), ExcMessage(failure));
@@ -71,13 +64,51 @@ namespace pg
                                     " (estimated from the tangent of the "
                                     "initial state): use a smaller step, or "
                                     "0 for the automatic one."));
-    double dt =
+    const double dt0 =
       time.time_step > 0 ? time.time_step : time.safety_factor * dt_stable;
-    const unsigned int n_steps =
-      std::max(1., std::ceil(T / dt - 1e-9 * T / dt));
-    dt               = T / n_steps;
-    result.n_steps   = n_steps;
-    result.time_step = dt;
+    result.n_steps   = std::max(1., std::ceil(T / dt0 - 1e-9 * T / dt0));
+    result.time_step = T / result.n_steps;
+  }
+
+
+
+  TimeStepper::Result
+  TimeStepper::run(MechanicalSystem          &system,
+                   TimeIntegrator            &integrator,
+                   const MassMatrices        &masses,
+                   LinearAlgebra::Vector     &v,
+                   TimeIntegration::Energies &energies,
+                   const std::vector<double> &disorder,
+                   const Operations          &operations,
+                   State                     &state,
+                   const bool                 restarted) const
+  {
+    const bool     explicit_ = integrator.is_explicit();
+    const double   T         = time.end_time;
+    const MPI_Comm comm      = system.communicator();
+    const IndexSet owned     = system.locally_owned_dofs();
+    Result        &result    = state.result;
+    if (!restarted)
+      {
+        state = State();
+        state.reinit(owned, comm);
+      }
+    LinearAlgebra::Vector &a = state.a, &f_ext = state.f_ext,
+                          &f_int = state.f_int, &r_old = state.r_old;
+    double &kinetic_constrained = state.kinetic_constrained;
+
+    // 1 at the constrained DoFs
+    LinearAlgebra::Vector constrained(owned, comm);
+    for (const auto i : owned)
+      if (system.homogeneous_constraints().is_constrained(i))
+        constrained(i) = 1.;
+    constrained.compress(VectorOperation::insert);
+
+    // a restart keeps the step of the run it continues
+    if (!restarted)
+      choose_time_step(system, masses, explicit_, result);
+    const unsigned int n_steps = result.n_steps;
+    const double       dt      = result.time_step;
     {
       std::ostringstream line;
       line << std::setprecision(4) << "  time step " << dt << ", " << n_steps
@@ -85,18 +116,8 @@ namespace pg
       out << line.str() << std::endl;
     }
 
-    // The state at t = 0: accelerations and energies.
-    LinearAlgebra::Vector a(owned, comm), f_ext(owned, comm),
-      f_int(owned, comm), Ma(owned, comm), u_old(owned, comm), du(owned, comm),
-      r_old(owned, comm), r_new(owned, comm);
-    system.external_force(f_ext);
-    {
-      const std::string failure = system.assemble_residual(false);
-      AssertThrow(failure.empty(), ExcMessage(failure));
-    }
-    integrator.initial_acceleration(system, a);
-    f_int = system.unbalanced_force();
-    f_int += f_ext;
+    LinearAlgebra::Vector Ma(owned, comm), u_old(owned, comm), du(owned, comm),
+      r_new(owned, comm);
     // E_kin (and that of the constrained DoFs, whose change the supports
     // pay for with lumped masses) and the reaction including inertia.
     const auto kinetic = [&](double &constrained_part) {
@@ -128,11 +149,6 @@ namespace pg
         }
       r.scale(constrained);
     };
-    double kinetic_constrained = 0;
-    energies                   = TimeIntegration::Energies();
-    energies.kinetic           = kinetic(kinetic_constrained);
-    energies.initial_kinetic   = energies.kinetic;
-    reaction(r_old);
 
     const auto progress = [&](const unsigned int step, const double t) {
       std::ostringstream line;
@@ -153,14 +169,31 @@ namespace pg
       out << line.str() << std::endl;
     };
 
-    operations.started(result);
-    operations.output(0, 0., 0);
-    progress(0, 0.);
     const double interval    = time.output_interval;
-    double       next_output = interval;
+    double      &next_output = state.next_output;
+    double      &t           = state.t;
+    if (!restarted)
+      {
+        // The state at t = 0: accelerations and energies.
+        system.external_force(f_ext);
+        {
+          const std::string failure = system.assemble_residual(false);
+          AssertThrow(failure.empty(), ExcMessage(failure));
+        }
+        integrator.initial_acceleration(system, a);
+        f_int = system.unbalanced_force();
+        f_int += f_ext;
+        energies                 = TimeIntegration::Energies();
+        energies.kinetic         = kinetic(kinetic_constrained);
+        energies.initial_kinetic = energies.kinetic;
+        reaction(r_old);
+        operations.started(result);
+        operations.output(0, 0., 0);
+        progress(0, 0.);
+        next_output = interval;
+      }
 
-    double t = 0;
-    for (unsigned int step = 1; step <= n_steps; ++step)
+    for (unsigned int step = state.step + 1; step <= n_steps; ++step)
       {
         const double t_new      = (step == n_steps ? T : step * dt);
         unsigned int iterations = 0;
@@ -241,6 +274,9 @@ namespace pg
             operations.output(step, t, iterations);
             progress(step, t);
           }
+        state.step = step;
+        if (operations.step_accepted)
+          operations.step_accepted(state);
       }
     result.final_time = t;
     return result;

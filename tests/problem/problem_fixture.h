@@ -23,16 +23,19 @@ read_file(const std::string &name)
   return text.str();
 }
 
+/** Run the parameters @p parameters (with @p restart: pg_solve --restart). */
 template <int dim>
 pg::RunSummary
-run_problem(const std::string &parameters, std::ostream &screen)
+run_problem(const std::string &parameters,
+            std::ostream      &screen,
+            const bool         restart = false)
 {
   dealii::ParameterHandler prm;
   pg::declare_all_parameters<dim>(prm);
   prm.parse_input_from_string(parameters);
   pg::Parameters::AllParameters<dim> all;
   all.parse_parameters(prm);
-  pg::Problem<dim> problem(all, MPI_COMM_WORLD, screen);
+  pg::Problem<dim> problem(all, MPI_COMM_WORLD, screen, restart);
   problem.run();
   return problem.summary();
 }

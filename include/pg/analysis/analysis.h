@@ -1,6 +1,7 @@
 #ifndef pg_analysis_analysis_h
 #define pg_analysis_analysis_h
 
+#include <pg/analysis/checkpoint.h>
 #include <pg/base/formulation_code.h>
 #include <pg/base/global.h>
 #include <pg/base/parameters.h>
@@ -77,6 +78,27 @@ namespace pg
        * nodal stresses, the final report and the files).
        */
       std::function<void(const unsigned int step, const double t)> finalize;
+      /**
+       * After the accepted step @p step at @p t (its files written): a
+       * checkpoint if 'Output/Checkpoint interval' asks for one or SIGINT
+       * or SIGTERM arrived, with the problem's state and what
+       * @p analysis_state writes; after a signal it stops the run
+       * (throws RunInterrupted). Collective.
+       */
+      std::function<void(const unsigned int        step,
+                         const double              t,
+                         const Checkpoint::Writer &analysis_state)>
+        checkpoint;
+      /**
+       * With `pg_solve --restart`: read the checkpoint into the problem
+       * (displacement, history, summary, statistics, PVD records) and
+       * @p analysis_state, set @p step and @p t to the step it was written
+       * after and return true; otherwise false. Collective.
+       */
+      std::function<bool(unsigned int             &step,
+                         double                   &t,
+                         const Checkpoint::Reader &analysis_state)>
+        restart;
     };
 
 

@@ -35,6 +35,11 @@ namespace pg
       std::vector<Line> lines;
       /** Points per line, both ends included. */
       unsigned int line_samples;
+      /**
+       * A checkpoint after every this many accepted load or time steps (0:
+       * only when SIGINT or SIGTERM stops the run).
+       */
+      unsigned int checkpoint_interval = 0;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -197,6 +197,17 @@ namespace pg
             const TableHandler     &statistics,
             RunSummary             &summary);
 
+      /**
+       * The PVD records (boost serialization, for checkpoints; the archive
+       * needs boost/serialization/utility.hpp and vector.hpp).
+       */
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int /*version*/)
+      {
+        archive &pvd_cells &pvd_particles;
+      }
+
     private:
       /** (time, file) of every VTU record written, for the PVD files. */
       std::vector<std::pair<double, std::string>> pvd_cells, pvd_particles;

@@ -60,12 +60,14 @@ namespace pg
                 const ConditionalOStream  &out);
 
     /**
-     * All load steps. Throws ExcMessage naming the load step, the load
-     * factor reached and the last failure if a load step does not converge
-     * after 'Maximum step cuts' cuts.
+     * The load steps from @p first_step on (a restart: the steps before it
+     * are done, the load factor is (first_step - 1) / n). Throws
+     * ExcMessage naming the load step, the load factor reached and the
+     * last failure if a load step does not converge after 'Maximum step
+     * cuts' cuts.
      */
     void
-    run(const Operations &operations) const;
+    run(const Operations &operations, const unsigned int first_step = 1) const;
 
   private:
     const Parameters::Loading &parameters;

@@ -33,6 +33,36 @@ namespace pg
       double       final_time = 0;
     };
 
+    /**
+     * The loop's state after a step, all a checkpoint needs besides the
+     * displacement and the velocity: the step, its time, the next output
+     * time, the acceleration, the external and internal forces and the
+     * reaction of the step (the trapezoidal rule of the next step starts
+     * from them).
+     */
+    struct State
+    {
+      Result                result;
+      unsigned int          step = 0;
+      double                t = 0, next_output = 0;
+      double                kinetic_constrained = 0;
+      LinearAlgebra::Vector a, f_ext, f_int, r_old;
+
+      /** Size the vectors for the owned DoFs @p owned. */
+      void
+      reinit(const IndexSet &owned, const MPI_Comm comm);
+
+      /** The scalars (boost serialization). */
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int /*version*/)
+      {
+        archive &result.time_step &result.stable_time_step &result
+          .n_steps &result.newton_iterations &result
+          .final_time &step &t &next_output  &kinetic_constrained;
+      }
+    };
+
     struct Operations
     {
       /** Step @p step converged after @p iterations Newton updates. */
@@ -51,6 +81,8 @@ namespace pg
        * computed up to step @p last_step at time @p t.
        */
       std::function<void(const unsigned int last_step, const double t)> give_up;
+      /** After every step and its output: the state (for a checkpoint). */
+      std::function<void(const State &)> step_accepted;
     };
 
     TimeStepper(const Parameters::Time   &time,
@@ -58,10 +90,12 @@ namespace pg
                 const ConditionalOStream &out);
 
     /**
-     * Run from the system's current displacement and the velocity @p v.
-     * @p energies is updated at every step; @p disorder (the particles'
-     * disorder indicator, filled by the output) is shown in the progress
-     * line if not empty.
+     * Run from the system's current displacement and the velocity @p v,
+     * at the start (@p restarted false: @p state is set up here) or after
+     * the step of @p state (a restart: @p state, @p v and @p energies as
+     * a checkpoint left them). @p energies is updated at every step;
+     * @p disorder (the particles' disorder indicator, filled by the output)
+     * is shown in the progress line if not empty.
      */
     Result
     run(MechanicalSystem          &system,
@@ -70,9 +104,22 @@ namespace pg
         LinearAlgebra::Vector     &v,
         TimeIntegration::Energies &energies,
         const std::vector<double> &disorder,
-        const Operations          &operations) const;
+        const Operations          &operations,
+        State                     &state,
+        const bool                 restarted = false) const;
 
   private:
+    /**
+     * The stable step 2 / omega_max of leapfrog from the tangent of the
+     * current (initial) state, checked against 'Time step' for leapfrog,
+     * and the step and the number of steps to 'End time', into @p result.
+     */
+    void
+    choose_time_step(MechanicalSystem   &system,
+                     const MassMatrices &masses,
+                     const bool          explicit_,
+                     Result             &result) const;
+
     const Parameters::Time   &time;
     const std::string         output_directory;
     const ConditionalOStream &out;
