@@ -94,6 +94,8 @@ namespace pg
     struct AssemblyCost
     {
       unsigned int n_assemblies = 0, n_solves = 0;
+      /** Krylov iterations summed over the Newton solves (cg, gmres). */
+      unsigned int linear_iterations = 0;
       double       fe_seconds = 0, family_seconds = 0;
       double       fe_entries = 0, family_entries = 0;
       double       fe_flops = 0, family_flops = 0;

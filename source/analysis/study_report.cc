@@ -70,7 +70,11 @@ namespace pg
 
 
 
-      namespace
+      // named, not anonymous: SeriesKey is used by the lambdas of the
+      // template write_results(), which GCC rejects for a type with
+      // internal linkage when this file is compiled inside a unity batch
+      // (-Wsubobject-linkage)
+      namespace report_details
       {
         std::string
         fixed(const double x)
@@ -120,7 +124,8 @@ namespace pg
         {
           return -double(dim) * std::log(e1 / e0) / std::log(n1 / n0);
         }
-      } // namespace
+      } // namespace report_details
+      using namespace report_details;
 
 
 

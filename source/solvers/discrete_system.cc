@@ -301,11 +301,12 @@ namespace pg
     update = 0;
     try
       {
-        solve_linear_system(prm.linear_solver,
-                            discretization.dof_handler,
-                            matrix,
-                            update,
-                            rhs);
+        summary.assembly_cost.linear_iterations +=
+          solve_linear_system(prm.linear_solver,
+                              discretization.dof_handler,
+                              matrix,
+                              update,
+                              rhs);
       }
     catch (const SolverControl::NoConvergence &e)
       {

@@ -10,6 +10,8 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <Amesos.h>
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +20,70 @@
 
 namespace pg
 {
+  namespace
+  {
+    /**
+     * The rigid body modes of elasticity at the vertex DoFs of this rank,
+     * rows in the local order of @p map: dim translations, then the
+     * rotations about the centroid of all vertices (2-D: 1, 3-D: 3), u =
+     * e_c and u = omega x (x - centroid). The near-null space of the
+     * tangent for ML's smoothed aggregation (ML's "null space: type" =
+     * "pre-computed").
+     */
+    template <int dim>
+    std::unique_ptr<Epetra_MultiVector>
+    rigid_body_modes(const DoFHandler<dim> &dof_handler, const Epetra_Map &map)
+    {
+      const unsigned int n_modes = (dim == 2 ? 3 : 6);
+      auto modes = std::make_unique<Epetra_MultiVector>(map, n_modes, true);
+      // the centroid of the vertices (the same on every rank)
+      const auto &tria = dof_handler.get_triangulation();
+      Point<dim>  centroid;
+      unsigned int n_used = 0;
+      for (unsigned int v = 0; v < tria.n_vertices(); ++v)
+        if (tria.get_used_vertices()[v])
+          {
+            centroid += tria.get_vertices()[v];
+            ++n_used;
+          }
+      centroid /= std::max(1U, n_used);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const Tensor<1, dim> x = cell->vertex(v) - centroid;
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  const int row = map.LID(
+                    static_cast<TrilinosWrappers::types::int_type>(
+                      cell->vertex_dof_index(v, c)));
+                  if (row < 0)
+                    continue;
+                  (*modes)[c][row] = 1.;
+                  // omega x x for omega = e_z (2-D and 3-D), e_x, e_y
+                  if (c == 0)
+                    (*modes)[dim][row] = -x[1];
+                  if (c == 1)
+                    (*modes)[dim][row] = x[0];
+                  if constexpr (dim == 3)
+                    {
+                      if (c == 1)
+                        (*modes)[4][row] = -x[2];
+                      if (c == 2)
+                        (*modes)[4][row] = x[1];
+                      if (c == 2)
+                        (*modes)[5][row] = -x[0];
+                      if (c == 0)
+                        (*modes)[5][row] = x[2];
+                    }
+                }
+            }
+      return modes;
+    }
+  } // namespace
+
+
+
   template <int dim>
   unsigned int
   solve_linear_system(const Parameters::LinearSolver    &parameters,
@@ -51,7 +117,22 @@ namespace pg
     amg_data.constant_modes  = constant_modes;
     amg_data.elliptic        = (parameters.type == "cg");
     amg_data.smoother_sweeps = 2;
-    amg.initialize(matrix, amg_data);
+    if (parameters.near_null_space == "translations")
+      amg.initialize(matrix, amg_data);
+    else
+      {
+        // deal.II's parameters with the rigid body modes as the null space
+        Teuchos::ParameterList              ml_parameters;
+        std::unique_ptr<Epetra_MultiVector> translations;
+        amg_data.set_parameters(ml_parameters, translations, matrix);
+        const std::unique_ptr<Epetra_MultiVector> modes =
+          rigid_body_modes(dof_handler,
+                           matrix.trilinos_matrix().RowMatrixRowMap());
+        ml_parameters.set("null space: type", "pre-computed");
+        ml_parameters.set("null space: dimension", modes->NumVectors());
+        ml_parameters.set("null space: vectors", modes->Values());
+        amg.initialize(matrix, ml_parameters);
+      }
 
     SolverControl control(std::max<unsigned int>(1000, rhs.size()),
                           parameters.tolerance * rhs.l2_norm(),

@@ -120,6 +120,16 @@ namespace pg
                           "1e-10",
                           Patterns::Double(0.),
                           "Relative residual reduction of cg and gmres.");
+        prm.declare_entry(
+          "AMG near-null space",
+          "rigid body modes",
+          Patterns::Selection("rigid body modes|translations"),
+          "The near-null space that ML's smoothed aggregation interpolates "
+          "exactly on every coarse level (cg and gmres): 'rigid body modes' "
+          "(dim translations and the rotations about the centroid of the "
+          "mesh, 3 in 2-D, 6 in 3-D, from the vertex and particle "
+          "positions), or 'translations' (dim constant modes, deal.II's "
+          "default for vector problems).");
       }
       prm.leave_subsection();
     }
@@ -132,7 +142,8 @@ namespace pg
       prm.enter_subsection("Linear solver");
       {
         type      = prm.get("Type");
-        tolerance = prm.get_double("Tolerance");
+        tolerance       = prm.get_double("Tolerance");
+        near_null_space = prm.get("AMG near-null space");
       }
       prm.leave_subsection();
     }

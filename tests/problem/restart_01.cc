@@ -191,7 +191,11 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  initlog();
+  // one log: rank 0's
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    initlog();
+  else
+    deallog.depth_console(0);
   std::ostringstream screen;
   const std::string  cook =
     read_file(SOURCE_DIR "/../pg_solve/cook_membrane_nu_04999_pg.prm");

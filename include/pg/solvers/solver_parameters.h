@@ -53,6 +53,8 @@ namespace pg
       /** direct | cg | gmres */
       std::string type;
       double      tolerance;
+      /** ML's near-null space: rigid body modes | translations */
+      std::string near_null_space;
 
       static void
       declare_parameters(ParameterHandler &prm);
