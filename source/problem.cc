@@ -375,9 +375,9 @@ namespace pg
     auto    &s = summary;
     archive &s.load_steps &s.newton_iterations &s.converged &s
       .newton_residuals &s.newton_residuals_last_step;
-    archive &s.assembly_cost.n_assemblies &s.assembly_cost.n_solves
-      &s.assembly_cost.linear_iterations;
-    auto                                  &d = s.dynamics;
+    archive &s.assembly_cost.n_assemblies &s.assembly_cost.n_solves &s
+      .assembly_cost.linear_iterations;
+    auto    &d = s.dynamics;
     archive &d.integrator &d.time_step &d.stable_time_step &d.n_steps &d.time &d
       .kinetic &d.internal_work &d.external_work &d.support_work &d.balance &d
       .disorder;

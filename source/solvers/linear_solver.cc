@@ -37,8 +37,8 @@ namespace pg
       const unsigned int n_modes = (dim == 2 ? 3 : 6);
       auto modes = std::make_unique<Epetra_MultiVector>(map, n_modes, true);
       // the centroid of the vertices (the same on every rank)
-      const auto &tria = dof_handler.get_triangulation();
-      Point<dim>  centroid;
+      const auto  &tria = dof_handler.get_triangulation();
+      Point<dim>   centroid;
       unsigned int n_used = 0;
       for (unsigned int v = 0; v < tria.n_vertices(); ++v)
         if (tria.get_used_vertices()[v])
@@ -54,8 +54,8 @@ namespace pg
               const Tensor<1, dim> x = cell->vertex(v) - centroid;
               for (unsigned int c = 0; c < dim; ++c)
                 {
-                  const int row = map.LID(
-                    static_cast<TrilinosWrappers::types::int_type>(
+                  const int row =
+                    map.LID(static_cast<TrilinosWrappers::types::int_type>(
                       cell->vertex_dof_index(v, c)));
                   if (row < 0)
                     continue;

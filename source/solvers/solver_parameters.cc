@@ -141,7 +141,7 @@ namespace pg
     {
       prm.enter_subsection("Linear solver");
       {
-        type      = prm.get("Type");
+        type            = prm.get("Type");
         tolerance       = prm.get_double("Tolerance");
         near_null_space = prm.get("AMG near-null space");
       }
