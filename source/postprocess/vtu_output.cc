@@ -103,7 +103,9 @@ namespace pg
       data_out.build_patches();
       const std::string cells =
         data_out.write_vtu_with_pvtu_record(dir, "solution", step, comm, 4);
-      pvd_cells.emplace_back(t, cells);
+      // finalize() writes the last step again: one record per file
+      if (pvd_cells.empty() || pvd_cells.back().second != cells)
+        pvd_cells.emplace_back(t, cells);
 
       std::vector<std::string> particle_names(dim, "displacement");
       for (const std::string &n : stress_field_names<dim>())
@@ -131,7 +133,9 @@ namespace pg
                                                 step,
                                                 comm,
                                                 4);
-      pvd_particles.emplace_back(t, particles_file);
+      if (pvd_particles.empty() ||
+          pvd_particles.back().second != particles_file)
+        pvd_particles.emplace_back(t, particles_file);
       if (view.root)
         {
           std::ofstream pvd(dir + "solution.pvd");
