@@ -170,6 +170,29 @@ namespace
     deallog << "  summary.json status: " << status(directory) << std::endl;
   }
 
+  /**
+   * The run of @p parameters without interruption into <name>_full, with
+   * a checkpoint every @p interval steps, then the restart from its last
+   * checkpoint (a copy in <name>_restart), compared. Returns the summary of
+   * the uninterrupted run.
+   */
+  pg::RunSummary
+  from_checkpoint(const std::string &name,
+                  const std::string &parameters,
+                  const unsigned int interval,
+                  std::ostream      &screen)
+  {
+    const pg::RunSummary full =
+      run_problem<2>(parameters + output(name + "_full", interval), screen);
+    copy_checkpoint(name + "_full", name + "_restart");
+    compare(name,
+            full,
+            run_problem<2>(parameters + output(name + "_restart", interval),
+                           screen,
+                           true));
+    return full;
+  }
+
   /** What a run that throws says. */
   void
   expect_error(const std::string &parameters, std::ostream &screen)
@@ -213,12 +236,7 @@ main(int argc, char **argv)
             "  set Output interval = 0.5\nend\n";
 
   deallog << "static, from the checkpoint of step 4" << std::endl;
-  const pg::RunSummary cook_full =
-    run_problem<2>(cook + output("static_full", 2), screen);
-  copy_checkpoint("static_full", "static_restart");
-  compare("static",
-          cook_full,
-          run_problem<2>(cook + output("static_restart", 2), screen, true));
+  const pg::RunSummary cook_full = from_checkpoint("static", cook, 2, screen);
 
   deallog << "static, SIGTERM in load step 1" << std::endl;
   interrupt(cook + output("static_restart", 0),
@@ -231,14 +249,7 @@ main(int argc, char **argv)
   deallog << "  summary.json status: " << status("static_restart") << std::endl;
 
   deallog << "leapfrog, from the checkpoint of step 50" << std::endl;
-  const pg::RunSummary leapfrog_full =
-    run_problem<2>(leapfrog + output("leapfrog_full", 25), screen);
-  copy_checkpoint("leapfrog_full", "leapfrog_restart");
-  compare("leapfrog",
-          leapfrog_full,
-          run_problem<2>(leapfrog + output("leapfrog_restart", 25),
-                         screen,
-                         true));
+  from_checkpoint("leapfrog", leapfrog, 25, screen);
 
   deallog << "newmark, SIGINT in time step 1" << std::endl;
   const pg::RunSummary newmark_full =
