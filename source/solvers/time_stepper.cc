@@ -83,16 +83,11 @@ namespace pg
                    State                     &state,
                    const bool                 restarted) const
   {
-    const bool     explicit_ = integrator.is_explicit();
-    const double   T         = time.end_time;
-    const MPI_Comm comm      = system.communicator();
-    const IndexSet owned     = system.locally_owned_dofs();
-    Result        &result    = state.result;
-    if (!restarted)
-      {
-        state = State();
-        state.reinit(owned, comm);
-      }
+    const bool             explicit_ = integrator.is_explicit();
+    const double           T         = time.end_time;
+    const MPI_Comm         comm      = system.communicator();
+    const IndexSet         owned     = system.locally_owned_dofs();
+    Result                &result    = state.result;
     LinearAlgebra::Vector &a = state.a, &f_ext = state.f_ext,
                           &f_int = state.f_int, &r_old = state.r_old;
     double &kinetic_constrained = state.kinetic_constrained;

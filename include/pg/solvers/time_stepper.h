@@ -91,9 +91,10 @@ namespace pg
 
     /**
      * Run from the system's current displacement and the velocity @p v,
-     * at the start (@p restarted false: @p state is set up here) or after
-     * the step of @p state (a restart: @p state, @p v and @p energies as
-     * a checkpoint left them). @p energies is updated at every step;
+     * at the start (@p restarted false: @p state as State::reinit() left
+     * it) or after the step of @p state (a restart: @p state, @p v and
+     * @p energies as a checkpoint left them). @p energies is updated at every
+     * step;
      * @p disorder (the particles' disorder indicator, filled by the output)
      * is shown in the progress line if not empty.
      */
