@@ -130,6 +130,10 @@ namespace pg
                const double              t,
                const Checkpoint::Writer &analysis_state);
 
+    /** "load step 4 (load factor 0.8)" or "time step 50 (t = 1.5)". */
+    std::string
+    step_text(const unsigned int step, const double t) const;
+
     /** Access::restart. */
     bool
     restart_from_checkpoint(unsigned int             &step,
@@ -372,15 +376,31 @@ namespace pg
   void
   Problem<dim>::Implementation::serialize_state(Archive &archive)
   {
-    auto    &s = summary;
-    archive &s.load_steps &s.newton_iterations &s.converged &s
-      .newton_residuals &s.newton_residuals_last_step;
-    archive &s.assembly_cost.n_assemblies &s.assembly_cost.n_solves &s
-      .assembly_cost.linear_iterations;
+    // one member per statement: a chain 'archive & a & b' is read by
+    // clang-format as declarations
+    auto &s = summary;
+    for (unsigned int *n : {&s.load_steps,
+                            &s.newton_iterations,
+                            &s.assembly_cost.n_assemblies,
+                            &s.assembly_cost.n_solves,
+                            &s.assembly_cost.linear_iterations})
+      archive &*n;
+    archive &s.converged;
+    archive &s.newton_residuals;
+    archive &s.newton_residuals_last_step;
     auto    &d = s.dynamics;
-    archive &d.integrator &d.time_step &d.stable_time_step &d.n_steps &d.time &d
-      .kinetic &d.internal_work &d.external_work &d.support_work &d.balance &d
-      .disorder;
+    archive &d.integrator;
+    archive &d.time_step;
+    archive &d.stable_time_step;
+    archive &d.n_steps;
+    for (std::vector<double> *series : {&d.time,
+                                        &d.kinetic,
+                                        &d.internal_work,
+                                        &d.external_work,
+                                        &d.support_work,
+                                        &d.balance,
+                                        &d.disorder})
+      archive &*series;
     archive &statistics;
     archive &postprocessors.output();
   }
@@ -409,18 +429,14 @@ namespace pg
                        if (analysis_state)
                          analysis_state(archive);
                      });
-    const std::string where =
-      (prm.time.dynamic() ? "time step " : "load step ") +
-      std::to_string(step) + (prm.time.dynamic() ? " (t = " : " (load factor ");
-    std::ostringstream at;
-    at << where << t << ")";
-    pcout << "  checkpoint after " << at.str() << " in '"
-          << checkpoint.directory() << "'" << std::endl;
+    const std::string at = step_text(step, t);
+    pcout << "  checkpoint after " << at << " in '" << checkpoint.directory()
+          << "'" << std::endl;
     if (signal != 0)
       throw RunInterrupted(
         signal,
-        "Stopped by " + Interruption::signal_name(signal) + " after " +
-          at.str() + ". The checkpoint is in '" + checkpoint.directory() +
+        "Stopped by " + Interruption::signal_name(signal) + " after " + at +
+          ". The checkpoint is in '" + checkpoint.directory() +
           "', the results written so far in '" + prm.output.directory +
           "'. Continue with: pg_solve --restart <this parameter file>.");
   }
@@ -456,13 +472,24 @@ namespace pg
           analysis_state(archive);
       });
     system.displacement_changed();
-    std::ostringstream line;
-    line << "  restart after " << (prm.time.dynamic() ? "time" : "load")
-         << " step " << step << " ("
-         << (prm.time.dynamic() ? "t = " : "load factor ") << t << ") from '"
-         << checkpoint.directory() << "'";
-    pcout << line.str() << std::endl;
+    pcout << "  restart after " << step_text(step, t) << " from '"
+          << checkpoint.directory() << "'" << std::endl;
     return true;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Problem<dim>::Implementation::step_text(const unsigned int step,
+                                          const double       t) const
+  {
+    std::ostringstream text;
+    if (prm.time.dynamic())
+      text << "time step " << step << " (t = " << t << ")";
+    else
+      text << "load step " << step << " (load factor " << t << ")";
+    return text.str();
   }
 
 
