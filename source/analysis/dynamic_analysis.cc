@@ -167,43 +167,43 @@ namespace pg
       // and energies it needs to continue (a checkpoint, a restart).
       TimeStepper::State state;
       state.reinit(owned_dofs, system.communicator());
+      // the vectors of a checkpoint, named for the message of a mismatch
+      const std::vector<std::pair<LinearAlgebra::Vector *, std::string>>
+                 checkpoint_vectors = {{&v, "velocity"},
+                                       {&state.a, "acceleration"},
+                                       {&state.f_ext, "external force"},
+                                       {&state.f_int, "internal force"},
+                                       {&state.r_old, "reaction"}};
       const auto serialize_energies = [this](auto &archive) {
-        archive &energies.kinetic &energies.initial_kinetic &energies
-          .internal_work &energies.external_work &energies.support_work;
+        for (double *e : {&energies.kinetic,
+                          &energies.initial_kinetic,
+                          &energies.internal_work,
+                          &energies.external_work,
+                          &energies.support_work})
+          archive &*e;
       };
+      // (TimeStepper passes back the state it advances: this one)
       operations.step_accepted = [&](const TimeStepper::State &s) {
-        access.checkpoint(
-          s.step,
-          s.t,
-          [&](boost::archive::binary_oarchive &archive) {
-            archive << s;
-            for (const LinearAlgebra::Vector *x :
-                 std::initializer_list<const LinearAlgebra::Vector *>{&v,
-                                                                      &s.a,
-                                                                      &s.f_ext,
-                                                                      &s.f_int,
-                                                                      &s.r_old})
-              CheckpointData::save(archive, *x);
-            serialize_energies(archive);
-          });
+        access.checkpoint(s.step,
+                          s.t,
+                          [&](boost::archive::binary_oarchive &archive) {
+                            archive << state;
+                            for (const auto &[x, name] : checkpoint_vectors)
+                              CheckpointData::save(archive, *x);
+                            serialize_energies(archive);
+                          });
       };
       unsigned int restart_step = 0;
       double       restart_time = 0;
-      const bool   restarted    = access.restart(
-        restart_step,
-        restart_time,
-        [&](boost::archive::binary_iarchive &archive) {
-          archive >> state;
-          for (const auto &[x, name] :
-               std::vector<std::pair<LinearAlgebra::Vector *, std::string>>{
-                 {&v, "velocity"},
-                 {&state.a, "acceleration"},
-                 {&state.f_ext, "external force"},
-                 {&state.f_int, "internal force"},
-                 {&state.r_old, "reaction"}})
-            CheckpointData::load(archive, *x, name);
-          serialize_energies(archive);
-        });
+      const bool   restarted =
+        access.restart(restart_step,
+                       restart_time,
+                       [&](boost::archive::binary_iarchive &archive) {
+                         archive >> state;
+                         for (const auto &[x, name] : checkpoint_vectors)
+                           CheckpointData::load(archive, *x, name);
+                         serialize_energies(archive);
+                       });
       operations.output  = access.postprocess;
       operations.give_up = [&](const unsigned int last_step, const double t) {
         access.history.revert();
