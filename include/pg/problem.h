@@ -135,6 +135,13 @@ namespace pg
     /** Largest VC correction factor |alpha^k| times the spacing. */
     double max_correction_factor = 0;
     /**
+     * How the VC system was solved (CorrectionFactors::solver); empty
+     * without VC (or with VC2).
+     */
+    std::string vc_solver;
+    /** GMRES iterations of the iterative VC solve. */
+    unsigned int vc_iterations = 0;
+    /**
      * Inf-sup analysis (section 7.2.5): one entry per mesh N of the series
      * in every array; NaN (null in summary.json) where a value does not
      * exist (the slope of the first mesh, k_pm without a pressure space).

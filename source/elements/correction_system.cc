@@ -3,6 +3,7 @@
 #include <pg/elements/second_order_correction.h>
 #include <pg/solvers/linear_solver.h>
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -36,11 +37,14 @@ namespace pg
 
   template <int dim>
   CorrectionSystem<dim>::CorrectionSystem(const FormulationCode &formulation,
-                                          const MPI_Comm         comm)
+                                          const MPI_Comm         comm,
+                                          const std::string     &solver)
     : formulation(formulation)
     , comm(comm)
+    , solver(solver)
   {
     Assert(formulation.variational_consistency, ExcInternalError());
+    Assert(solver == "automatic" || solver == "direct", ExcInternalError());
   }
 
 
@@ -103,10 +107,12 @@ namespace pg
   {
     using VCBoundary     = FormulationCode::VCBoundary;
     const unsigned int n = particles->n_particles();
+    singular             = false;
     kind.assign(n, Row::interior);
     R.assign(n, unit_symmetric_tensor<dim>());
     normal.assign(n, Tensor<1, dim>());
     target.assign(n, Tensor<1, dim>());
+    constraint_row.assign(n, 0);
     std::vector<unsigned int> surface;
     for (unsigned int k = 0; k < n; ++k)
       {
@@ -135,28 +141,28 @@ namespace pg
           kind[k] = Row::fixed;
         else if (formulation.vc_boundary == VCBoundary::sn)
           {
-            // rows: [0; t_1; t_2], the tangents orthonormal to n
-            kind[k] = Row::tangential;
-            R[k]    = Tensor<2, dim>();
-            Tensor<1, dim> t;
-            if constexpr (dim == 2)
-              {
-                t[0]    = -normal[k][1];
-                t[1]    = normal[k][0];
-                R[k][1] = t;
-              }
-            else
-              {
-                unsigned int axis = 0;
-                for (unsigned int c = 1; c < dim; ++c)
-                  if (std::abs(normal[k][c]) < std::abs(normal[k][axis]))
-                    axis = c;
-                t = Point<dim>::unit_vector(axis);
-                t -= (t * normal[k]) * normal[k];
-                t /= t.norm();
-                R[k][1] = t;
-                R[k][2] = cross_product_3d(normal[k], t);
-              }
+            // The constraint n . alpha^k = 0 takes the row of the component
+            // in which n is largest, and t_i . d^k = 0 the other rows i,
+            // with t_i the unit projection of e_i onto the tangent plane:
+            // every row keeps a nonzero diagonal (|n_i| >= 1/sqrt(dim) and
+            // t_i . e_i >= sqrt(1 - 1/dim) ... > 0), which ILU and the AMG
+            // smoothers of the iterative solve need (t_i . e_i = sqrt(1 -
+            // n_i^2) >= 1/sqrt(2)). Any basis of the
+            // tangent plane gives the same factors.
+            kind[k]                  = Row::tangential;
+            R[k]                     = Tensor<2, dim>();
+            unsigned int normal_axis = 0;
+            for (unsigned int c = 1; c < dim; ++c)
+              if (std::abs(normal[k][c]) > std::abs(normal[k][normal_axis]))
+                normal_axis = c;
+            constraint_row[k] = normal_axis;
+            for (unsigned int i = 0; i < dim; ++i)
+              if (i != normal_axis)
+                {
+                  Tensor<1, dim> t = Point<dim>::unit_vector(i);
+                  t -= (t * normal[k]) * normal[k];
+                  R[k][i] = t / t.norm();
+                }
           }
       }
     for (unsigned int k = 0; k < n; ++k)
@@ -185,7 +191,12 @@ namespace pg
       free_surface = free_surface || (kind[k] != Row::interior);
     if (formulation.vc_boundary != FormulationCode::VCBoundary::p &&
         free_surface)
-      return;
+      {
+        // with FE coupling the system keeps a null space (see solve())
+        for (unsigned int k = 0; k < n; ++k)
+          singular = singular || particles->on_interface(k);
+        return;
+      }
 
     AssertThrow(surface.size() > dim,
                 ExcMessage("The VC correction needs at least dim + 1 "
@@ -338,7 +349,7 @@ namespace pg
             const auto row = particles->dof(k, i);
             if (kind[k] == Row::fixed)
               matrix.add(row, row, 1.);
-            else if (kind[k] == Row::tangential && i == 0)
+            else if (kind[k] == Row::tangential && i == constraint_row[k])
               for (unsigned int c = 0; c < dim; ++c)
                 matrix.add(row, particles->dof(k, c), normal[k][c]);
           }
@@ -381,42 +392,80 @@ namespace pg
         const Tensor<1, dim> r = R[k] * (target[k] - unit_stress[k]);
         for (unsigned int i = 0; i < dim; ++i)
           if (kind[k] == Row::interior ||
-              (kind[k] == Row::tangential && i != 0))
+              (kind[k] == Row::tangential && i != constraint_row[k]))
             rhs(particles->dof(k, i)) = r[i];
       }
     rhs.compress(VectorOperation::insert);
 
-    // The system can be singular but consistent: with FE coupling plus a
-    // free surface, affine fields tangential on the surface give rows that
-    // do not depend on alpha (doc/element-view.md section 5). A direct
-    // solve would then return an ordering-dependent member of the solution
-    // set. Iterative refinement with a slightly shifted factorization,
+    // Iterative (the default where the system is regular): GMRES with
+    // ILU(0) from alpha = 0. The matrix is one horizon wide and behaves
+    // like a discrete Laplacian (C^kk = -sum_q w Q^kq on the diagonal):
+    // 23 / 32 / 41 iterations at 8,019 / 24,843 / 56,355 DoFs (3-D
+    // cantilever, V5sn, 1.51 h), 0.6 s where KLU took 134 s
+    // (doc/benchmarks/vc_solve.md).
+    //
+    // The system is singular but consistent with FE coupling plus a free
+    // surface: affine fields tangential on the surface give rows that do
+    // not depend on alpha (doc/element-view.md section 5). GMRES then
+    // returns some member of the solution set, with an arbitrary
+    // null-space part (2-D coupled patch test, VCBCPBG V5sn Unl: max
+    // |alpha| h = 115 against 8.4, and Newton inverts elements), so such
+    // systems are solved directly: iterative refinement with a slightly
+    // shifted factorization,
     //   alpha <- alpha + (A + eps D)^{-1} (b - A alpha),  alpha_0 = 0,
-    // converges in a few steps on the regular part (eps << |lambda|) and
-    // keeps the null-space part at zero: the same factors on any number of
-    // MPI ranks. D is the largest entry of each row. Factors by serial KLU
-    // on one rank, by distributed MUMPS on more (KLU would hold all factors
-    // on rank 0; MUMPS changes the round-off digits of alpha).
-    static const bool  have_mumps = Amesos().Query("Amesos_Mumps");
-    const unsigned int corrections =
-      solve_by_shifted_refinement(matrix,
-                                  solution,
-                                  rhs,
-                                  1e-9,
-                                  1e-14,
-                                  50,
-                                  1e-12,
-                                  Utilities::MPI::n_mpi_processes(comm) > 1 &&
-                                      have_mumps ?
-                                    "Amesos_Mumps" :
-                                    "Amesos_Klu");
-    AssertThrow(corrections < 50,
-                ExcMessage("The VC system could not be solved: change "
-                           "the VC boundary option of 'Formulation' in "
-                           "subsection 'Discretization' (p, s or sn), or "
-                           "check for coincident particles (unmerged mesh "
-                           "vertices: 'Coincident vertices' in subsection "
-                           "'Geometry')."));
+    // which converges in a few steps on the regular part (eps << |lambda|)
+    // and keeps the null-space part small: the same factors on any number
+    // of MPI ranks. D is the largest entry of each row. Factors by serial
+    // KLU on one rank, by distributed MUMPS on more (KLU would hold all
+    // factors on rank 0; MUMPS changes the round-off digits of alpha).
+    factors.solver = (solver == "direct" ? "direct" :
+                      singular           ? "direct (singular system)" :
+                                           "iterative");
+    if (factors.solver == "iterative")
+      {
+        try
+          {
+            factors.solver_iterations = solve_by_ilu_gmres(matrix,
+                                                           solution,
+                                                           rhs,
+                                                           relative_tolerance,
+                                                           max_iterations);
+          }
+        catch (const SolverControl::NoConvergence &failure)
+          {
+            factors.solver = "direct (fallback)";
+            ConditionalOStream(std::cout,
+                               Utilities::MPI::this_mpi_process(comm) == 0)
+              << "  note: the iterative VC solve did not converge in "
+              << failure.last_step << " GMRES iterations (|b - A alpha| / "
+              << "|b| = " << failure.last_residual / rhs.l2_norm()
+              << "); solving it directly instead ('VC solver = direct' "
+              << "in subsection 'Linear solver' skips the attempt)."
+              << std::endl;
+          }
+      }
+    if (factors.solver != "iterative")
+      {
+        static const bool  have_mumps  = Amesos().Query("Amesos_Mumps");
+        const unsigned int corrections = solve_by_shifted_refinement(
+          matrix,
+          solution,
+          rhs,
+          1e-9,
+          1e-14,
+          50,
+          1e-12,
+          Utilities::MPI::n_mpi_processes(comm) > 1 && have_mumps ?
+            "Amesos_Mumps" :
+            "Amesos_Klu");
+        AssertThrow(corrections < 50,
+                    ExcMessage(
+                      "The VC system could not be solved: change the VC "
+                      "boundary option of 'Formulation' in subsection "
+                      "'Discretization' (p, s or sn), or check for "
+                      "coincident particles (unmerged mesh vertices: "
+                      "'Coincident vertices' in subsection 'Geometry')."));
+      }
     LinearAlgebra::Vector ghosted(owned_dofs, particle_dofs, comm);
     ghosted = solution;
     factors.alpha.resize(n);

@@ -363,6 +363,9 @@ namespace pg
           << ", \"energy\": " << json_number(s.energy)
           << ", \"energy_relative\": " << json_number(s.energy_relative)
           << "},\n";
+    if (!s.vc_solver.empty())
+      out << "  \"vc_solve\": {\"solver\": \"" << s.vc_solver
+          << "\", \"iterations\": " << s.vc_iterations << "},\n";
     const auto &c = s.assembly_cost;
     out << "  \"assembly_cost\": {\"n_assemblies\": " << c.n_assemblies
         << ", \"n_solves\": " << c.n_solves

@@ -188,7 +188,9 @@ namespace pg
   {
     if (!correction_system)
       correction_system =
-        std::make_unique<CorrectionSystem<dim>>(formulation, comm);
+        std::make_unique<CorrectionSystem<dim>>(formulation,
+                                                comm,
+                                                prm.linear_solver.vc_solver);
     const CorrectionFactors<dim> factors =
       correct_family_tables(*correction_system,
                             discretization.particles,
@@ -205,6 +207,11 @@ namespace pg
     // values mean strongly modified test functions.
     summary.max_correction_factor =
       factors.max_scaled_factor(discretization.particles);
+    if (!formulation.second_order_consistency)
+      {
+        summary.vc_solver     = factors.solver;
+        summary.vc_iterations = factors.solver_iterations;
+      }
     compute_unit_stress_residual();
   }
 

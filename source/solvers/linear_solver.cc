@@ -161,6 +161,31 @@ namespace pg
 
 
   unsigned int
+  solve_by_ilu_gmres(const LinearAlgebra::SparseMatrix &matrix,
+                     LinearAlgebra::Vector             &solution,
+                     const LinearAlgebra::Vector       &rhs,
+                     const double                       tolerance,
+                     const unsigned int                 max_iterations)
+  {
+    TrilinosWrappers::PreconditionILU ilu;
+    ilu.initialize(matrix);
+    solution = 0;
+    SolverControl                      control(max_iterations,
+                          tolerance * rhs.l2_norm(),
+                          false,
+                          false);
+    SolverGMRES<LinearAlgebra::Vector> gmres(
+      control,
+      SolverGMRES<LinearAlgebra::Vector>::AdditionalData(
+        200,
+        /*right_preconditioning=*/true));
+    gmres.solve(matrix, solution, rhs, ilu);
+    return control.last_step();
+  }
+
+
+
+  unsigned int
   solve_by_shifted_refinement(const LinearAlgebra::SparseMatrix &matrix,
                               LinearAlgebra::Vector             &solution,
                               const LinearAlgebra::Vector       &rhs,

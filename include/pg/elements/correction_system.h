@@ -31,6 +31,13 @@ namespace pg
      * correction (SecondOrderCorrection); 0 otherwise.
      */
     double max_second_order_residual = 0;
+    /**
+     * How the system was solved: "iterative", "direct", "direct (singular
+     * system)" or "direct (fallback)" (GMRES did not converge).
+     */
+    std::string solver;
+    /** GMRES iterations of the iterative solve (0 if solved directly). */
+    unsigned int solver_iterations = 0;
 
     /** max_k |alpha^k| h_k: the size of the correction relative to ~1/h. */
     double
@@ -65,8 +72,21 @@ namespace pg
   class CorrectionSystem
   {
   public:
-    /** For the VC code @p formulation on the ranks of @p comm. */
-    CorrectionSystem(const FormulationCode &formulation, const MPI_Comm comm);
+    /**
+     * For the VC code @p formulation on the ranks of @p comm, solved by
+     * @p solver ('VC solver' in subsection 'Linear solver'): "automatic"
+     * (GMRES with ILU(0) where the system is regular, the direct solver
+     * where it is singular, i.e. FE coupling plus a free surface, or where
+     * GMRES does not converge) or "direct".
+     */
+    CorrectionSystem(const FormulationCode &formulation,
+                     const MPI_Comm         comm,
+                     const std::string     &solver = "automatic");
+
+    /** |b - A alpha| / |b| at which GMRES stops. */
+    static constexpr double relative_tolerance = 1e-13;
+    /** GMRES iterations before the direct solver takes over. */
+    static constexpr unsigned int max_iterations = 2000;
 
     /**
      * Classify the rows, build the sparsity pattern from the correction
@@ -126,6 +146,7 @@ namespace pg
 
     const FormulationCode formulation;
     const MPI_Comm        comm;
+    const std::string     solver;
 
     const ParticleSet<dim>    *particles = nullptr;
     const FamilySet<dim>      *families  = nullptr;
@@ -137,11 +158,19 @@ namespace pg
 
     std::vector<Row> kind;
     /**
-     * The row operator of each particle: 1, or for sn rows [0; t_1; t_2]
-     * with tangents orthonormal to the normal.
+     * The row operator of each particle: 1, or for sn rows the tangents
+     * t_i (unit projections of e_i onto the tangent plane) in the rows
+     * i != constraint_row and 0 in the row of the constraint n . alpha = 0.
      */
     std::vector<Tensor<2, dim>> R;
+    /** sn rows: the component whose row holds n . alpha^k = 0. */
+    std::vector<unsigned int>   constraint_row;
     std::vector<Tensor<1, dim>> normal, target;
+    /**
+     * true if the system keeps a null space (FE coupling plus a free
+     * surface, without option p): solved directly.
+     */
+    bool singular = false;
     /** VC2: the particles whose factors stay zero. */
     std::vector<bool> second_order_fixed;
 

@@ -174,21 +174,23 @@ namespace pg
     const auto         geom    = geometry(k);
     if (formulation.method == Method::pbg)
       {
-        // d^a += w_q phi^{ka} Q^{kq} alpha^k at every point q of family k
+        // d^a += sum_q w_q phi^{ka} Q^{kq} alpha^k over the points q of
+        // family k: one block phi^{ka} (sum_q w_q Q^{kq}) per member a
         double family_volume = 0;
         for (const double v : geom.volumes)
           family_volume += v;
         const bool u1 = (formulation.points == FormulationCode::Points::u1);
         const unsigned int n_points = u1 ? 1 : n;
+        Tensor<2, dim>     weighted_projector;
         for (unsigned int q = 0; q < n_points; ++q)
           {
             const double w =
               u1 ? geom.volumes[0] :
                    geom.volumes[0] * geom.volumes[q] / family_volume;
-            const Tensor<2, dim> Q = projector(geom, q);
-            for (unsigned int a = 0; a < n; ++a)
-              add(members[a], k, (w * phi[k][a]) * Q);
+            weighted_projector += w * projector(geom, q);
           }
+        for (unsigned int a = 0; a < n; ++a)
+          add(members[a], k, phi[k][a] * weighted_projector);
         return;
       }
     const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();

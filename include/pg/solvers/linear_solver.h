@@ -28,6 +28,21 @@ namespace pg
                       const LinearAlgebra::Vector       &rhs);
 
   /**
+   * Solve the non-symmetric A x = b by restarted GMRES (200 vectors, right
+   * preconditioning, so the stopping test sees the true residual) with
+   * Ifpack's ILU(0) (block Jacobi over the MPI ranks), from x = 0, until
+   * |b - A x| <= @p tolerance |b|. Every row of A needs a nonzero diagonal.
+   * Returns the number of iterations; throws SolverControl::NoConvergence
+   * after @p max_iterations.
+   */
+  unsigned int
+  solve_by_ilu_gmres(const LinearAlgebra::SparseMatrix &matrix,
+                     LinearAlgebra::Vector             &solution,
+                     const LinearAlgebra::Vector       &rhs,
+                     const double                       tolerance,
+                     const unsigned int                 max_iterations);
+
+  /**
    * Solve A x = b for a square @p matrix A that may be singular but whose
    * system is consistent, by iterative refinement with a slightly shifted
    * factorization (Amesos KLU):

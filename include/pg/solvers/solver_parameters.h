@@ -55,6 +55,8 @@ namespace pg
       double      tolerance;
       /** ML's near-null space: rigid body modes | translations */
       std::string near_null_space;
+      /** The VC correction system: iterative | direct */
+      std::string vc_solver;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -1,0 +1,101 @@
+#!/bin/sh
+# The VC correction system solved iteratively ('VC solver = automatic', the
+# default: GMRES + ILU(0) on these regular systems) and directly (KLU with
+# shifted refinement, 'VC solver = direct'), on the 3-D cantilever of amg_iterations.sh (length 4,
+# 1 x 1 section, clamped at x = 0, dead traction on x = 4, neo-Hooke E =
+# 1000, nu = 0.3, cells distorted by 0.25, one load step, cg + ML with
+# tolerance 1e-10), VCBCPBG V5sn Unl at 'Horizon factor = 1.51', and on
+# Peridigm's tensile bar (prm/tensile_test.prm, 48,816 DoFs, 63 members per
+# family). Prints a markdown table: DoFs, VC phase (matrix, solve, corrected
+# tables and the unit-stress residual: timing.txt 'vc'), GMRES iterations,
+# the Newton solve and assembly time per Newton step, and the tip or gauge
+# displacement (both solvers must agree). Release build, one MPI rank.
+#
+# Usage (from the repository root):
+#   sh doc/benchmarks/vc_solve.sh BUILD [sizes] [tensile] > doc/benchmarks/vc_solve.md
+# sizes: the x-subdivisions, y = z = x/4 (default "16 32 48 64");
+# tensile: "yes" (default) adds the tensile bar.
+set -e
+PG=$1/applications/pg_solve/pg_solve
+SIZES=${2:-16 32 48 64}
+TENSILE=${3:-yes}
+[ -x "$PG" ] || { echo "usage: $0 BUILD [sizes] [tensile]" >&2; exit 1; }
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+
+# row LABEL SOLVER POINT: one table row from $WORK/out
+row() {
+  python3 - "$WORK/out" "$1" "$2" "$3" <<'PY'
+import json, sys
+out, label, solver, point = sys.argv[1:]
+s = json.load(open(out + "/summary.json"))
+t = s["timing"]
+steps = max(1, s["newton_iterations"])
+vc = s.get("vc_solve", {})
+print("| %s | %s | %d | %.2f | %s | %.2f | %.2f | %.6g |" % (
+    label, solver, s["n_dofs"], t["vc"], vc.get("iterations", "-"),
+    t["solve"] / steps, t["assembly"] / steps, s["points"][point][-1 if point == "tip" else 1]))
+PY
+}
+
+echo "| problem | VC solver | DoFs | VC phase s | GMRES its | solve s/Newton step | assembly s/Newton step | u_z tip / u_y gauge |"
+echo "|---|---|---|---|---|---|---|---|"
+for n in $SIZES; do
+  m=$((n / 4))
+  for solver in automatic direct; do
+    cat > "$WORK/case.prm" <<END
+set Dimension = 3
+subsection Geometry
+  set Lower corner = 0, 0, 0
+  set Upper corner = 4, 1, 1
+  set Subdivisions = $n, $m, $m
+  set Distortion   = 0.25
+end
+subsection Discretization
+  set Formulation    = VCBCPBG V5sn Unl
+  set Horizon factor = 1.51
+end
+subsection Material
+  set Model           = neo-Hooke
+  set Young's modulus = 1000
+  set Poisson's ratio = 0.3
+end
+subsection Boundary conditions
+  set Dirichlet = 0: xyz
+  set Neumann   = 1
+  subsection Traction
+    set Function expression = 0; 0; -1*t
+  end
+end
+subsection Loading
+  set Load steps = 1
+end
+subsection Linear solver
+  set Type      = cg
+  set Tolerance = 1e-10
+  set VC solver = $solver
+end
+subsection Output
+  set Directory = $WORK/out
+  set VTU       = false
+  set Points    = tip: 4, 0.5, 0.5
+end
+END
+    rm -rf "$WORK/out"
+    "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1 || { echo "| cantilever $n | $solver | failed: $(tail -1 "$WORK/log") |"; continue; }
+    row "cantilever $n x $m x $m" "$solver" tip
+  done
+done
+if [ "$TENSILE" = yes ]; then
+  for solver in automatic direct; do
+    sed "s|File name .*|File name = ../shared/data/peridigm_tensile_test/tensile_test.msh|; s|Formulation = .*|Formulation = VCBCPBG V5sn Unl|; s|Directory = .*|Directory = $WORK/out|" prm/tensile_test.prm > "$WORK/case.prm"
+    cat >> "$WORK/case.prm" <<END
+subsection Linear solver
+  set VC solver = $solver
+end
+END
+    rm -rf "$WORK/out"
+    "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1 || { echo "| tensile bar | $solver | failed: $(tail -1 "$WORK/log") |"; continue; }
+    row "Peridigm's tensile bar" "$solver" "gauge top"
+  done
+fi
