@@ -64,9 +64,17 @@ namespace pg
                 << " triangles, " << n[2] << " tetrahedra";
         }
       if (!cpd || summary.n_fe_cells > 0)
-        pcout << "\n  material:        " << prm.material.model
-              << ", E = " << prm.material.youngs_modulus
-              << ", nu = " << prm.material.poissons_ratio;
+        {
+          pcout << "\n  material:        " << prm.material.model;
+          if (prm.material.bulk_modulus)
+            pcout << ", K = " << *prm.material.bulk_modulus
+                  << ", mu = " << prm.material.mu()
+                  << " (E = " << prm.material.youngs_modulus
+                  << ", nu = " << prm.material.poissons_ratio << ")";
+          else
+            pcout << ", E = " << prm.material.youngs_modulus
+                  << ", nu = " << prm.material.poissons_ratio;
+        }
       pcout << "\n"
             << "  cells:           "
             << discretization.triangulation.n_active_cells() << " ("

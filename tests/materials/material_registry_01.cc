@@ -1,10 +1,11 @@
 // The material registry: the registered names in their listing order, the
-// 'Model' selection and documentation built from them (and equal to those
-// of before the registry), creating each material by name in 2-D and 3-D,
-// the model's own checks in its constructor, and the message for an
-// unknown name, which lists the registered names.
+// 'Model' selection and documentation built from them (those of before the
+// registry, plus the isochoric-volumetric neo-Hooke), creating each material
+// by name in 2-D and 3-D, the model's own checks in its constructor, and the
+// message for an unknown name, which lists the registered names.
 
 #include <pg/base/parameters.h>
+#include <pg/materials/isochoric_volumetric_neo_hooke.h>
 #include <pg/materials/linear_elastic.h>
 #include <pg/materials/material_registry.h>
 #include <pg/materials/neo_hooke.h>
@@ -67,6 +68,11 @@ check_create()
       create_material<dim>(make_parameters("neo-Hooke", "strain")).get()) !=
       nullptr,
     ExcInternalError());
+  AssertThrow(dynamic_cast<IsochoricVolumetricNeoHooke<dim> *>(
+                create_material<dim>(
+                  make_parameters("isochoric-volumetric neo-Hooke", "strain"))
+                  .get()) != nullptr,
+              ExcInternalError());
   for (const std::string &name : material_registry().names())
     AssertThrow(create_material<dim>(make_parameters(name, "strain"))
                     ->n_state_variables() == 0,
@@ -85,16 +91,21 @@ main()
 
   const std::vector<std::string> expected = {"linear elastic",
                                              "saint venant kirchhoff",
-                                             "neo-Hooke"};
+                                             "neo-Hooke",
+                                             "isochoric-volumetric neo-Hooke"};
   AssertThrow(registry.names() == expected, ExcInternalError());
   AssertThrow(registry.selection() ==
-                "linear elastic|saint venant kirchhoff|neo-Hooke",
+                "linear elastic|saint venant kirchhoff|neo-Hooke|"
+                "isochoric-volumetric neo-Hooke",
               ExcInternalError());
-  AssertThrow(registry.documentation() ==
-                "'linear elastic' (small strain, P = sigma(eps)), 'saint "
-                "venant kirchhoff' (S = lambda tr(E) 1 + 2 mu E, eq. 2.45) or "
-                "'neo-Hooke' (compressible, eq. 2.42)",
-              ExcInternalError());
+  AssertThrow(
+    registry.documentation() ==
+      "'linear elastic' (small strain, P = sigma(eps)), 'saint "
+      "venant kirchhoff' (S = lambda tr(E) 1 + 2 mu E, eq. 2.45), "
+      "'neo-Hooke' (compressible, eq. 2.42) or 'isochoric-volumetric "
+      "neo-Hooke' (mu/2 (tr b_iso - 3) + K/4 (J^2 - 1 - 2 ln J), eqs. "
+      "2.43-2.44)",
+    ExcInternalError());
   for (const std::string &name : registry.names())
     deallog << "registered: " << name << " ("
             << registry.find(name)->description << ")" << std::endl;
@@ -146,7 +157,7 @@ main()
   AssertThrow(unknown ==
                 "The entry 'Material/Model' has the value <mooney rivlin>, "
                 "but it must be one of 'linear elastic', 'saint venant "
-                "kirchhoff' or 'neo-Hooke'.",
+                "kirchhoff', 'neo-Hooke' or 'isochoric-volumetric neo-Hooke'.",
               ExcInternalError());
   deallog << "unknown model: " << unknown << std::endl;
 

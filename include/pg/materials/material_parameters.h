@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <map>
+#include <optional>
 #include <string>
 
 namespace pg
@@ -21,9 +22,23 @@ namespace pg
     {
       /** A registered name: linear elastic | saint venant kirchhoff | ... */
       std::string model;
-      double      youngs_modulus;
-      double      poissons_ratio;
-      double      density;
+      /**
+       * Young's modulus E and Poisson's ratio nu. They define lambda() and
+       * mu() unless bulk_modulus and shear_modulus are given; then they
+       * hold the equivalent E = 9 K mu / (3 K + mu) and
+       * nu = (3 K - 2 mu) / (2 (3 K + mu)), for output.
+       */
+      double youngs_modulus;
+      double poissons_ratio;
+      /**
+       * Bulk modulus K and shear modulus mu, if the input gave the elastic
+       * constants as 'Bulk modulus' and 'Shear modulus' (both or neither);
+       * then they define lambda() = K - 2/3 mu and mu(). Empty (the
+       * default): E and nu define them.
+       */
+      std::optional<double> bulk_modulus;
+      std::optional<double> shear_modulus;
+      double                density;
       /** strain | stress (2-D only) */
       std::string plane;
       /**
@@ -33,10 +48,14 @@ namespace pg
        */
       std::map<std::string, std::string> model_entries;
 
-      /** Lame's first parameter of the 3-D material. */
+      /**
+       * Lame's first parameter of the 3-D material: K - 2/3 mu if
+       * bulk_modulus and shear_modulus are given, else
+       * E nu / ((1 + nu) (1 - 2 nu)).
+       */
       double
       lambda() const;
-      /** Shear modulus. */
+      /** Shear modulus: shear_modulus if given, else E / (2 (1 + nu)). */
       double
       mu() const;
 
@@ -54,7 +73,14 @@ namespace pg
        */
       static void
       declare_parameters(ParameterHandler &prm);
-      /** Read the common entries and those of the selected model. */
+      /**
+       * Read the common entries and those of the selected model. The elastic
+       * constants are 'Young's modulus' and 'Poisson's ratio' or, instead,
+       * 'Bulk modulus' and 'Shear modulus' (both positive; then E and nu
+       * must keep their defaults). Throws ExcBadParameter naming the entry
+       * for a single modulus, a modulus that is not a positive number, or
+       * both pairs.
+       */
       void
       parse_parameters(ParameterHandler &prm);
     };

@@ -1,0 +1,334 @@
+#include <pg/base/exceptions.h>
+#include <pg/materials/isochoric_volumetric_neo_hooke.h>
+#include <pg/materials/material_registry.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+
+namespace pg
+{
+  namespace Materials
+  {
+    // A named namespace: the unity build may compile this file together
+    // with neo_hooke.cc, whose anonymous namespace has a checked_jacobian()
+    // of the same signature.
+    namespace IsoVol
+    {
+      /**
+       * J = det F, and throw if J <= 0.
+       */
+      template <int dim>
+      inline double
+      checked_jacobian(const Tensor<2, dim> &F)
+      {
+        const double J = determinant(F);
+        AssertThrow(J > 0.,
+                    ExcMessage("The deformation gradient has J = det F = " +
+                               Utilities::to_string(J) +
+                               " <= 0: the element is inverted, and the "
+                               "isochoric-volumetric neo-Hooke material is "
+                               "undefined there. Reduce the load step by "
+                               "increasing 'Load steps' in subsection "
+                               "'Loading'."));
+        return J;
+      }
+
+
+
+      /**
+       * Theta, and throw if Theta <= 0.
+       */
+      inline double
+      checked_volume_ratio(const double Theta)
+      {
+        AssertThrow(Theta > 0.,
+                    ExcMessage("The volume ratio Theta = " +
+                               Utilities::to_string(Theta) +
+                               " <= 0: the volumetric potential W_vol of the "
+                               "isochoric-volumetric neo-Hooke material is "
+                               "undefined there. Reduce the load step by "
+                               "increasing 'Load steps' in subsection "
+                               "'Loading'."));
+        return Theta;
+      }
+
+
+
+      /**
+       * I_1 = tr(F F^T) of the 3-D deformation gradient; in 2-D plane
+       * strain F_33 = 1 adds 1 to the in-plane trace.
+       */
+      template <int dim>
+      inline double
+      first_invariant(const Tensor<2, dim> &F)
+      {
+        double I_1 = 3. - dim;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            I_1 += F[a][b] * F[a][b];
+        return I_1;
+      }
+
+
+
+      /**
+       * P_iso = mu J^{-2/3} (F - I_1/3 F^-T) and, unless @p A is nullptr,
+       * *A = A_iso, given J, F^-1 and I_1.
+       */
+      template <int dim>
+      void
+      isochoric_part(const double          mu,
+                     const Tensor<2, dim> &F,
+                     const double          J,
+                     const Tensor<2, dim> &Finv,
+                     const double          I_1,
+                     Tensor<2, dim>       &P,
+                     Tensor<4, dim>       *A)
+      {
+        const double mu_J = mu * std::pow(J, -2. / 3.);
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            P[a][b] = mu_J * (F[a][b] - I_1 / 3. * Finv[b][a]);
+        if (A == nullptr)
+          return;
+
+        // A_ABCD = mu J^-2/3 [d_AC d_BD - 2/3 (F_AB Finv_DC + Finv_BA F_CD)
+        //          + I_1/3 Finv_BC Finv_DA + 2 I_1/9 Finv_BA Finv_DC].
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int d = 0; d < dim; ++d)
+                (*A)[a][b][k][d] =
+                  mu_J *
+                  ((a == k && b == d ? 1. : 0.) -
+                   2. / 3. * (F[a][b] * Finv[d][k] + Finv[b][a] * F[k][d]) +
+                   I_1 / 3. * Finv[b][k] * Finv[d][a] +
+                   2. * I_1 / 9. * Finv[b][a] * Finv[d][k]);
+      }
+    } // namespace IsoVol
+
+
+
+    template <int dim>
+    IsochoricVolumetricNeoHooke<dim>::IsochoricVolumetricNeoHooke(
+      const Parameters::Material &parameters)
+      : kappa(parameters.lambda() + 2. / 3. * parameters.mu())
+      , mu(parameters.mu())
+    {
+      AssertThrow(dim == 3 || parameters.plane == "strain",
+                  ExcBadParameter("Material/Plane",
+                                  parameters.plane,
+                                  "plane stress is not available for 'Model "
+                                  "= isochoric-volumetric neo-Hooke'; use "
+                                  "'Plane = strain'."));
+    }
+
+
+
+    template <int dim>
+    void
+    IsochoricVolumetricNeoHooke<dim>::evaluate(const Tensor<2, dim> &F,
+                                               Tensor<2, dim>       &P,
+                                               Tensor<4, dim>       &A) const
+    {
+      const double         J    = IsoVol::checked_jacobian(F);
+      const Tensor<2, dim> Finv = invert(F);
+      IsoVol::isochoric_part(mu, F, J, Finv, IsoVol::first_invariant(F), P, &A);
+
+      // P_vol = K/2 (J^2 - 1) F^-T,
+      // A_vol = K J^2 Finv_BA Finv_DC - K/2 (J^2 - 1) Finv_BC Finv_DA.
+      const double c        = 0.5 * kappa * (J * J - 1.);
+      const double kappa_J2 = kappa * J * J;
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = 0; b < dim; ++b)
+          {
+            P[a][b] += c * Finv[b][a];
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int d = 0; d < dim; ++d)
+                A[a][b][k][d] += kappa_J2 * Finv[b][a] * Finv[d][k] -
+                                 c * Finv[b][k] * Finv[d][a];
+          }
+    }
+
+
+
+    template <int dim>
+    Tensor<2, dim>
+    IsochoricVolumetricNeoHooke<dim>::first_piola_stress(
+      const Tensor<2, dim> &F) const
+    {
+      const double         J    = IsoVol::checked_jacobian(F);
+      const Tensor<2, dim> Finv = invert(F);
+      Tensor<2, dim>       P;
+      IsoVol::isochoric_part<dim>(mu,
+                                  F,
+                                  J,
+                                  Finv,
+                                  IsoVol::first_invariant(F),
+                                  P,
+                                  nullptr);
+
+      const double c = 0.5 * kappa * (J * J - 1.);
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = 0; b < dim; ++b)
+          P[a][b] += c * Finv[b][a];
+      return P;
+    }
+
+
+
+    template <int dim>
+    Tensor<2, 3>
+    IsochoricVolumetricNeoHooke<dim>::cauchy_stress(
+      const Tensor<2, dim> &F) const
+    {
+      const double J    = IsoVol::checked_jacobian(F);
+      const double I_1  = IsoVol::first_invariant(F);
+      const double mu_J = mu * std::pow(J, -2. / 3.);
+      const double c    = 0.5 * kappa * (J * J - 1.);
+
+      // sigma = [mu J^-2/3 (b - I_1/3 1) + K/2 (J^2 - 1) 1] / J, b = F F^T.
+      Tensor<2, 3> sigma;
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = 0; b < dim; ++b)
+          {
+            double b_ab = 0.;
+            for (unsigned int k = 0; k < dim; ++k)
+              b_ab += F[a][k] * F[b][k];
+            sigma[a][b] =
+              (mu_J * (b_ab - (a == b ? I_1 / 3. : 0.)) + (a == b ? c : 0.)) /
+              J;
+          }
+
+      // Plane strain: b_33 = 1.
+      if (dim == 2)
+        sigma[2][2] = (mu_J * (1. - I_1 / 3.) + c) / J;
+      return sigma;
+    }
+
+
+
+    template <int dim>
+    double
+    IsochoricVolumetricNeoHooke<dim>::strain_energy_density(
+      const Tensor<2, dim> &F) const
+    {
+      return isochoric_strain_energy_density(F) +
+             volumetric_strain_energy_density(IsoVol::checked_jacobian(F));
+    }
+
+
+
+    template <int dim>
+    double
+    IsochoricVolumetricNeoHooke<dim>::isochoric_strain_energy_density(
+      const Tensor<2, dim> &F) const
+    {
+      const double J = IsoVol::checked_jacobian(F);
+      return 0.5 * mu *
+             (std::pow(J, -2. / 3.) * IsoVol::first_invariant(F) - 3.);
+    }
+
+
+
+    template <int dim>
+    Tensor<2, dim>
+    IsochoricVolumetricNeoHooke<dim>::isochoric_first_piola_stress(
+      const Tensor<2, dim> &F) const
+    {
+      const double   J = IsoVol::checked_jacobian(F);
+      Tensor<2, dim> P_iso;
+      IsoVol::isochoric_part<dim>(mu,
+                                  F,
+                                  J,
+                                  invert(F),
+                                  IsoVol::first_invariant(F),
+                                  P_iso,
+                                  nullptr);
+      return P_iso;
+    }
+
+
+
+    template <int dim>
+    void
+    IsochoricVolumetricNeoHooke<dim>::evaluate_isochoric(
+      const Tensor<2, dim> &F,
+      Tensor<2, dim>       &P_iso,
+      Tensor<4, dim>       &A_iso) const
+    {
+      const double J = IsoVol::checked_jacobian(F);
+      IsoVol::isochoric_part(mu,
+                             F,
+                             J,
+                             invert(F),
+                             IsoVol::first_invariant(F),
+                             P_iso,
+                             &A_iso);
+    }
+
+
+
+    template <int dim>
+    double
+    IsochoricVolumetricNeoHooke<dim>::volumetric_strain_energy_density(
+      const double Theta) const
+    {
+      IsoVol::checked_volume_ratio(Theta);
+      return 0.25 * kappa * (Theta * Theta - 1. - 2. * std::log(Theta));
+    }
+
+
+
+    template <int dim>
+    double
+    IsochoricVolumetricNeoHooke<dim>::volumetric_strain_energy_derivative(
+      const double Theta) const
+    {
+      IsoVol::checked_volume_ratio(Theta);
+      return 0.5 * kappa * (Theta - 1. / Theta);
+    }
+
+
+
+    template <int dim>
+    double
+    IsochoricVolumetricNeoHooke<
+      dim>::volumetric_strain_energy_second_derivative(const double Theta) const
+    {
+      IsoVol::checked_volume_ratio(Theta);
+      return 0.5 * kappa * (1. + 1. / (Theta * Theta));
+    }
+
+
+
+    template <int dim>
+    double
+    IsochoricVolumetricNeoHooke<dim>::bulk_modulus() const
+    {
+      return kappa;
+    }
+
+
+
+    template <int dim>
+    double
+    IsochoricVolumetricNeoHooke<dim>::shear_modulus() const
+    {
+      return mu;
+    }
+
+
+
+    template class IsochoricVolumetricNeoHooke<2>;
+    template class IsochoricVolumetricNeoHooke<3>;
+
+    // Listed after neo-Hooke (30).
+    PG_REGISTER_MATERIAL(IsochoricVolumetricNeoHooke,
+                         "isochoric-volumetric neo-Hooke",
+                         "mu/2 (tr b_iso - 3) + K/4 (J^2 - 1 - 2 ln J), "
+                         "eqs. 2.43-2.44",
+                         40)
+  } // namespace Materials
+} // namespace pg
