@@ -268,6 +268,10 @@ namespace pg
       assemble(true);
       return reduced_failure();
     };
+    operations.assemble_residual = [this]() -> std::string {
+      assemble(false);
+      return reduced_failure();
+    };
     operations.residual_norm    = [this]() { return rhs.l2_norm(); };
     operations.solve_and_update = [this](double &energy) {
       return apply_newton_update(energy);

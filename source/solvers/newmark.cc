@@ -64,10 +64,9 @@ namespace pg
     double                   static_norm = 0;
     NewtonSolver::Operations operations  = system.newton_operations();
     // the static assembly (its failures already reduced over the ranks),
-    // then the inertia
-    const auto assemble_static = operations.assemble;
-    operations.assemble        = [&]() -> std::string {
-      const std::string failure = assemble_static();
+    // then the inertia: M a_new in the residual, c0 M in the tangent
+    const auto add_inertia = [&](const std::string &failure,
+                                 const bool         with_tangent) {
       if (!failure.empty())
         return failure;
       a_new = u;
@@ -76,9 +75,19 @@ namespace pg
       masses.consistent.vmult(Ma, a_new);
       static_norm = system.residual().l2_norm();
       system.add_condensed(Ma, -1., system.residual());
-      system.tangent().add(c0, masses.condensed);
-      return "";
+      if (with_tangent)
+        system.tangent().add(c0, masses.condensed);
+      return std::string();
     };
+    const auto assemble_static   = operations.assemble;
+    const auto assemble_residual = operations.assemble_residual;
+    operations.assemble          = [&]() {
+      return add_inertia(assemble_static(), true);
+    };
+    if (assemble_residual)
+      operations.assemble_residual = [&]() {
+        return add_inertia(assemble_residual(), false);
+      };
     operations.reference = [&](const double first) {
       return std::max({first, static_norm, Ma.l2_norm()});
     };

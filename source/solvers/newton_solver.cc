@@ -21,7 +21,9 @@ namespace pg
     double reference = 0, first_energy = 0, last_energy = 0;
     for (unsigned int it = 0; it <= parameters.maximum_iterations; ++it)
       {
-        result.failure = operations.assemble();
+        result.failure = operations.assemble_residual ?
+                           operations.assemble_residual() :
+                           operations.assemble();
         if (!result.failure.empty())
           {
             result.outcome = Outcome::assembly_failed;
@@ -64,6 +66,16 @@ namespace pg
         if (it == parameters.maximum_iterations)
           break;
 
+        if (operations.assemble_residual)
+          {
+            result.failure = operations.assemble();
+            if (!result.failure.empty())
+              {
+                result.outcome = Outcome::assembly_failed;
+                result.history = line.str();
+                return result;
+              }
+          }
         double energy = 0;
         if (!operations.solve_and_update(energy))
           {

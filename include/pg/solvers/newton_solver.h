@@ -17,7 +17,7 @@ namespace pg
    * update live elsewhere (the Assembler and the problem's state): the one
    * loop behind the quasi-static load steps and the implicit Newmark steps.
    *
-   * Iteration i assembles R_i (and the tangent), then stops when
+   * Iteration i assembles R_i, then stops when
    *  - |R_i| <= 'Absolute tolerance' or |R_i| <= 'Relative tolerance' |R_0|
    *    (converged), or
    *  - the residual stagnates at the round-off floor (converged at
@@ -30,7 +30,8 @@ namespace pg
    *    membrane at nu = 0.4999 stalls at 2e-9 to 1e-7 |R_0| (doc/solvers.md),
    *  - or it fails: the assembly or the linear solver fails, |R| is not
    *    finite, or 'Maximum iterations' updates did not converge.
-   * Otherwise it solves K du = R and applies du.
+   * Otherwise it assembles the tangent K (with R, unless the caller has no
+   * residual-only assembly), solves K du = R and applies du.
    */
   class NewtonSolver
   {
@@ -55,6 +56,16 @@ namespace pg
        * ranks: every rank returns the same verdict).
        */
       std::function<std::string()> assemble;
+      /**
+       * Optional: assemble R alone (no tangent), with the same failure
+       * verdicts. If set, every iteration first assembles R alone for the
+       * convergence test and calls assemble() only when an update follows:
+       * the tangent at the converged state is then never built. It pays
+       * where R costs far less than R and K: a PBG residual is about 30
+       * times cheaper than its tangent (explicit step cost against Newton
+       * assembly, doc/benchmarks/vc_solve.md).
+       */
+      std::function<std::string()> assemble_residual;
       /** |R| of the last assembly (the l2 norm over all ranks). */
       std::function<double()> residual_norm;
       /**
