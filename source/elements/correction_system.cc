@@ -112,7 +112,7 @@ namespace pg
     R.assign(n, unit_symmetric_tensor<dim>());
     normal.assign(n, Tensor<1, dim>());
     target.assign(n, Tensor<1, dim>());
-    constraint_row.assign(n, 0);
+    constraint.assign(n, Tensor<2, dim>());
     std::vector<unsigned int> surface;
     for (unsigned int k = 0; k < n; ++k)
       {
@@ -135,10 +135,39 @@ namespace pg
         if (formulation.vc_boundary == VCBoundary::p)
           target[k] = normal[k];
         normal[k] /= normal[k].norm();
+        const Tensor<1, dim> &edge = particles->edge_direction(k);
+        const bool            at_edge =
+          (formulation.vc_boundary == VCBoundary::sn && edge.norm() > 0);
         if (formulation.vc_boundary == VCBoundary::s ||
             (formulation.vc_boundary == VCBoundary::sn &&
-             particles->at_corner(k)))
+             particles->at_corner(k) && !at_edge))
           kind[k] = Row::fixed;
+        else if (at_edge)
+          {
+            // 3-D edge (two faces): alpha^k along the edge direction e and
+            // e . d^k = 0, so that d^k lies in the plane of the two face
+            // normals and the loads and supports of the faces can take it
+            // (with alpha^k = 0 here d^k keeps a part along the edge that
+            // neither a traction T (n . d^k) nor a symmetry plane carries).
+            // The equation takes the row of the component in which e is
+            // largest, the constraints c_j . alpha^k = 0 the other rows j,
+            // with c_j the unit projection of e_j onto the plane normal to
+            // e: nonzero diagonals, as on the faces below.
+            kind[k]                = Row::tangential;
+            R[k]                   = Tensor<2, dim>();
+            unsigned int edge_axis = 0;
+            for (unsigned int c = 1; c < dim; ++c)
+              if (std::abs(edge[c]) > std::abs(edge[edge_axis]))
+                edge_axis = c;
+            R[k][edge_axis] = edge;
+            for (unsigned int j = 0; j < dim; ++j)
+              if (j != edge_axis)
+                {
+                  Tensor<1, dim> c = Point<dim>::unit_vector(j);
+                  c -= (c * edge) * edge;
+                  constraint[k][j] = c / c.norm();
+                }
+          }
         else if (formulation.vc_boundary == VCBoundary::sn)
           {
             // The constraint n . alpha^k = 0 takes the row of the component
@@ -155,7 +184,7 @@ namespace pg
             for (unsigned int c = 1; c < dim; ++c)
               if (std::abs(normal[k][c]) > std::abs(normal[k][normal_axis]))
                 normal_axis = c;
-            constraint_row[k] = normal_axis;
+            constraint[k][normal_axis] = normal[k];
             for (unsigned int i = 0; i < dim; ++i)
               if (i != normal_axis)
                 {
@@ -349,9 +378,10 @@ namespace pg
             const auto row = particles->dof(k, i);
             if (kind[k] == Row::fixed)
               matrix.add(row, row, 1.);
-            else if (kind[k] == Row::tangential && i == constraint_row[k])
+            else if (constraint[k][i].norm() > 0)
               for (unsigned int c = 0; c < dim; ++c)
-                matrix.add(row, particles->dof(k, c), normal[k][c]);
+                if (constraint[k][i][c] != 0.)
+                  matrix.add(row, particles->dof(k, c), constraint[k][i][c]);
           }
       }
     for (const auto dof : owned_dofs)
@@ -391,8 +421,7 @@ namespace pg
           continue;
         const Tensor<1, dim> r = R[k] * (target[k] - unit_stress[k]);
         for (unsigned int i = 0; i < dim; ++i)
-          if (kind[k] == Row::interior ||
-              (kind[k] == Row::tangential && i != constraint_row[k]))
+          if (kind[k] != Row::fixed && constraint[k][i].norm() == 0)
             rhs(particles->dof(k, i)) = r[i];
       }
     rhs.compress(VectorOperation::insert);

@@ -5,6 +5,8 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/tria.h>
 
+#include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace pg
@@ -134,6 +136,7 @@ namespace pg
         }
 
     corner.assign(n, false);
+    edges.assign(n, Tensor<1, dim>());
     for (unsigned int k = 0; k < n; ++k)
       {
         spacings[k] /= n_edges[k];
@@ -141,6 +144,34 @@ namespace pg
           for (const auto &b : face_normals[k])
             if (a * b < std::cos(numbers::PI / 6))
               corner[k] = true;
+        if constexpr (dim == 3)
+          if (corner[k])
+            {
+              // the edge direction: normal to the two most different face
+              // normals; an edge if no face normal is more than 30 degrees
+              // out of their plane (a third face makes a corner)
+              const auto    &normals = face_normals[k];
+              Tensor<1, dim> a = normals[0], b = normals[0];
+              for (const auto &p : normals)
+                for (const auto &q : normals)
+                  if (p * q < a * b)
+                    {
+                      a = p;
+                      b = q;
+                    }
+              Tensor<1, dim> e = cross_product_3d(a, b);
+              // (nearly) opposite normals, a knife edge: left a corner
+              if (e.norm() < 1e-6)
+                continue;
+              e /= e.norm();
+              if (std::all_of(normals.begin(),
+                              normals.end(),
+                              [&](const Tensor<1, dim> &f) {
+                                return std::abs(f * e) <
+                                       std::sin(numbers::PI / 6);
+                              }))
+                edges[k] = e;
+            }
       }
   }
 
@@ -162,6 +193,16 @@ namespace pg
   {
     AssertIndexRange(k, corner.size());
     return corner[k];
+  }
+
+
+
+  template <int dim>
+  const Tensor<1, dim> &
+  ParticleSet<dim>::edge_direction(const unsigned int k) const
+  {
+    AssertIndexRange(k, edges.size());
+    return edges[k];
   }
 
 

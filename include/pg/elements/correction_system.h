@@ -56,9 +56,13 @@ namespace pg
    * the boundary option of the formulation code (section 11.5):
    *   interior:   d^k(alpha) = target^k (0; the area vector for p and on
    *               the FE/meshfree interface),
-   *   tangential: n . alpha^k = 0 and t . d^k(alpha) = 0 (sn),
-   *   fixed:      alpha^k = 0 (s; sn at edges and corners; p at d + 1
-   *               particles, or 1 for PPG2 and V1).
+   *   tangential: n . alpha^k = 0 and t . d^k(alpha) = 0 (sn); at an
+   *               edge of a 3-D body (ParticleSet::edge_direction() e)
+   *               alpha^k parallel to e and e . d^k(alpha) = 0, so that
+   *               d^k lies in the plane of the two face normals,
+   *   fixed:      alpha^k = 0 (s; sn at corners: 2-D corners and 3-D
+   *               vertices where three faces meet; p at d + 1 particles,
+   *               or 1 for PPG2 and V1).
    * Rows and columns are the global DoFs of the particles (row i of
    * particle k is particles.dof(k, i)); all other owned DoFs get an
    * identity row. VC2 (PPG2, section 11.6) is solved by
@@ -160,11 +164,17 @@ namespace pg
     /**
      * The row operator of each particle: 1, or for sn rows the tangents
      * t_i (unit projections of e_i onto the tangent plane) in the rows
-     * i != constraint_row and 0 in the row of the constraint n . alpha = 0.
+     * that hold an equation t_i . d^k = 0 (at a 3-D edge the edge
+     * direction in one row) and 0 in the rows of the constraints.
      */
     std::vector<Tensor<2, dim>> R;
-    /** sn rows: the component whose row holds n . alpha^k = 0. */
-    std::vector<unsigned int>   constraint_row;
+    /**
+     * sn rows: row i holds the constraint c_i . alpha^k = 0 if c_i =
+     * constraint[k][i] is nonzero: the normal in one row on a face, the
+     * two unit projections of e_j onto the plane of the face normals at a
+     * 3-D edge. Zero for interior and fixed particles.
+     */
+    std::vector<Tensor<2, dim>> constraint;
     std::vector<Tensor<1, dim>> normal, target;
     /**
      * true if the system keeps a null space (FE coupling plus a free

@@ -77,6 +77,18 @@ namespace pg
     bool
     at_corner(const unsigned int k) const;
 
+    /**
+     * 3-D: for a particle at an edge of the body, where the boundary faces
+     * at particle k fall into two groups of normals more than 30 degrees
+     * apart (at_corner()) but every face normal lies within 30 degrees of
+     * the plane of the two most different ones, the unit direction of the
+     * edge (normal to that plane). Zero elsewhere: interior and smooth
+     * surface particles, corners where three or more faces meet, and
+     * always in 2-D.
+     */
+    const Tensor<1, dim> &
+    edge_direction(const unsigned int k) const;
+
     /** Whether particle k is also a vertex of a finite element cell. */
     bool
     on_interface(const unsigned int k) const;
@@ -102,6 +114,7 @@ namespace pg
     std::vector<std::map<types::boundary_id, Tensor<1, dim>>> area_vectors;
     std::vector<bool>                                         interface;
     std::vector<bool>                                         corner;
+    std::vector<Tensor<1, dim>>                               edges;
     std::vector<Tensor<1, dim>>                               interface_areas;
   };
 } // namespace pg
