@@ -429,8 +429,8 @@ namespace pg
     // Iterative (the default where the system is regular): GMRES with
     // ILU(0) from alpha = 0. The matrix is one horizon wide and behaves
     // like a discrete Laplacian (C^kk = -sum_q w Q^kq on the diagonal):
-    // 23 / 32 / 41 iterations at 8,019 / 24,843 / 56,355 DoFs (3-D
-    // cantilever, V5sn, 1.51 h), 0.6 s where KLU took 134 s
+    // 49 / 74 / 99 iterations at 8,019 / 24,843 / 56,355 DoFs (3-D
+    // cantilever, V5sn, 1.51 h), a VC set-up of 2.5 s where KLU took 147 s
     // (doc/benchmarks/vc_solve.md).
     //
     // The system is singular but consistent with FE coupling plus a free

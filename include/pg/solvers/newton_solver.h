@@ -61,9 +61,9 @@ namespace pg
        * verdicts. If set, every iteration first assembles R alone for the
        * convergence test and calls assemble() only when an update follows:
        * the tangent at the converged state is then never built. It pays
-       * where R costs far less than R and K: a PBG residual is about 30
-       * times cheaper than its tangent (explicit step cost against Newton
-       * assembly, doc/benchmarks/vc_solve.md).
+       * where R costs far less than R and K: about 1/16 of it for Q1 cells
+       * and for VCBCPBG V5sn Unl families (3-D cantilever, 4 Newton steps:
+       * assembly 14 % shorter, doc/benchmarks/vc_solve.md).
        */
       std::function<std::string()> assemble_residual;
       /** |R| of the last assembly (the l2 norm over all ranks). */
