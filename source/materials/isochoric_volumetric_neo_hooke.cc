@@ -11,30 +11,11 @@ namespace pg
   namespace Materials
   {
     // A named namespace: the unity build may compile this file together
-    // with neo_hooke.cc, whose anonymous namespace has a checked_jacobian()
-    // of the same signature.
+    // with other materials' helpers.
     namespace IsoVol
     {
-      /**
-       * J = det F, and throw if J <= 0.
-       */
-      template <int dim>
-      inline double
-      checked_jacobian(const Tensor<2, dim> &F)
-      {
-        const double J = determinant(F);
-        AssertThrow(J > 0.,
-                    ExcMessage("The deformation gradient has J = det F = " +
-                               Utilities::to_string(J) +
-                               " <= 0: the element is inverted, and the "
-                               "isochoric-volumetric neo-Hooke material is "
-                               "undefined there. Reduce the load step by "
-                               "increasing 'Load steps' in subsection "
-                               "'Loading'."));
-        return J;
-      }
-
-
+      /** The name in error messages. */
+      constexpr const char *model_name = "isochoric-volumetric neo-Hooke";
 
       /**
        * Theta, and throw if Theta <= 0.
@@ -132,7 +113,7 @@ namespace pg
                                                Tensor<2, dim>       &P,
                                                Tensor<4, dim>       &A) const
     {
-      const double         J    = IsoVol::checked_jacobian(F);
+      const double         J    = checked_jacobian(F, IsoVol::model_name);
       const Tensor<2, dim> Finv = invert(F);
       IsoVol::isochoric_part(mu, F, J, Finv, IsoVol::first_invariant(F), P, &A);
 
@@ -158,7 +139,7 @@ namespace pg
     IsochoricVolumetricNeoHooke<dim>::first_piola_stress(
       const Tensor<2, dim> &F) const
     {
-      const double         J    = IsoVol::checked_jacobian(F);
+      const double         J    = checked_jacobian(F, IsoVol::model_name);
       const Tensor<2, dim> Finv = invert(F);
       Tensor<2, dim>       P;
       IsoVol::isochoric_part<dim>(mu,
@@ -183,7 +164,7 @@ namespace pg
     IsochoricVolumetricNeoHooke<dim>::cauchy_stress(
       const Tensor<2, dim> &F) const
     {
-      const double J    = IsoVol::checked_jacobian(F);
+      const double J    = checked_jacobian(F, IsoVol::model_name);
       const double I_1  = IsoVol::first_invariant(F);
       const double mu_J = mu * std::pow(J, -2. / 3.);
       const double c    = 0.5 * kappa * (J * J - 1.);
@@ -215,7 +196,8 @@ namespace pg
       const Tensor<2, dim> &F) const
     {
       return isochoric_strain_energy_density(F) +
-             volumetric_strain_energy_density(IsoVol::checked_jacobian(F));
+             volumetric_strain_energy_density(
+               checked_jacobian(F, IsoVol::model_name));
     }
 
 
@@ -225,7 +207,7 @@ namespace pg
     IsochoricVolumetricNeoHooke<dim>::isochoric_strain_energy_density(
       const Tensor<2, dim> &F) const
     {
-      const double J = IsoVol::checked_jacobian(F);
+      const double J = checked_jacobian(F, IsoVol::model_name);
       return 0.5 * mu *
              (std::pow(J, -2. / 3.) * IsoVol::first_invariant(F) - 3.);
     }
@@ -237,7 +219,7 @@ namespace pg
     IsochoricVolumetricNeoHooke<dim>::isochoric_first_piola_stress(
       const Tensor<2, dim> &F) const
     {
-      const double   J = IsoVol::checked_jacobian(F);
+      const double   J = checked_jacobian(F, IsoVol::model_name);
       Tensor<2, dim> P_iso;
       IsoVol::isochoric_part<dim>(mu,
                                   F,
@@ -258,7 +240,7 @@ namespace pg
       Tensor<2, dim>       &P_iso,
       Tensor<4, dim>       &A_iso) const
     {
-      const double J = IsoVol::checked_jacobian(F);
+      const double J = checked_jacobian(F, IsoVol::model_name);
       IsoVol::isochoric_part(mu,
                              F,
                              J,

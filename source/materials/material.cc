@@ -2,6 +2,8 @@
 #include <pg/materials/material.h>
 #include <pg/materials/material_registry.h>
 
+#include <deal.II/base/utilities.h>
+
 #include <cmath>
 
 namespace pg
@@ -36,6 +38,29 @@ namespace pg
         .get(parameters.model, "Material/Model")
         .template create<dim>(parameters);
     }
+
+
+
+    template <int dim>
+    double
+    checked_jacobian(const Tensor<2, dim> &F, const std::string &model)
+    {
+      const double J = determinant(F);
+      AssertThrow(J > 0.,
+                  ExcMessage("The deformation gradient has J = det F = " +
+                             Utilities::to_string(J) +
+                             " <= 0: the element is inverted, and the " +
+                             model +
+                             " material is undefined there. Reduce the load "
+                             "step by increasing 'Load steps' in subsection "
+                             "'Loading'."));
+      return J;
+    }
+
+    template double
+    checked_jacobian(const Tensor<2, 2> &, const std::string &);
+    template double
+    checked_jacobian(const Tensor<2, 3> &, const std::string &);
 
 
 

@@ -10,26 +10,6 @@ namespace pg
 {
   namespace Materials
   {
-    namespace
-    {
-      /**
-       * J = det F, and throw if J <= 0.
-       */
-      template <int dim>
-      inline double
-      checked_jacobian(const Tensor<2, dim> &F)
-      {
-        const double J = determinant(F);
-        AssertThrow(J > 0.,
-                    ExcMessage("The deformation gradient has J = det F = " +
-                               Utilities::to_string(J) +
-                               " <= 0: the element is inverted, and the "
-                               "neo-Hooke material is undefined there. "
-                               "Reduce the load step by increasing 'Load "
-                               "steps' in subsection 'Loading'."));
-        return J;
-      }
-    } // namespace
 
 
 
@@ -54,7 +34,7 @@ namespace pg
                             Tensor<2, dim>       &P,
                             Tensor<4, dim>       &A) const
     {
-      const double         J    = checked_jacobian(F);
+      const double         J    = checked_jacobian(F, "neo-Hooke");
       const Tensor<2, dim> Finv = invert(F);
       const double         c    = 0.5 * lambda * (J * J - 1.);
 
@@ -81,7 +61,7 @@ namespace pg
     Tensor<2, dim>
     NeoHooke<dim>::first_piola_stress(const Tensor<2, dim> &F) const
     {
-      const double         J    = checked_jacobian(F);
+      const double         J    = checked_jacobian(F, "neo-Hooke");
       const Tensor<2, dim> Finv = invert(F);
       const double         c    = 0.5 * lambda * (J * J - 1.);
 
@@ -98,7 +78,7 @@ namespace pg
     Tensor<2, 3>
     NeoHooke<dim>::cauchy_stress(const Tensor<2, dim> &F) const
     {
-      const double J = checked_jacobian(F);
+      const double J = checked_jacobian(F, "neo-Hooke");
       const double c = 0.5 * lambda * (J * J - 1.);
 
       // sigma = [mu (b - 1) + lambda/2 (J^2 - 1) 1] / J, b = F F^T.
@@ -125,7 +105,7 @@ namespace pg
     double
     NeoHooke<dim>::strain_energy_density(const Tensor<2, dim> &F) const
     {
-      const double J     = checked_jacobian(F);
+      const double J     = checked_jacobian(F, "neo-Hooke");
       const double log_J = std::log(J);
 
       // tr C - 3; in 2-D plane strain C_33 = 1, so this is the in-plane trace

@@ -146,6 +146,15 @@ namespace pg
     std::unique_ptr<Material<dim>>
     create_material(const Parameters::Material &parameters);
 
+    /**
+     * J = det F of a finite strain model named @p model (e.g. "neo-Hooke");
+     * throws, with advice, if J <= 0 (an inverted element, where the model
+     * is undefined).
+     */
+    template <int dim>
+    double
+    checked_jacobian(const Tensor<2, dim> &F, const std::string &model);
+
     /** von Mises stress of a 3x3 Cauchy stress. */
     double
     von_mises_stress(const Tensor<2, 3> &sigma);
