@@ -19,6 +19,37 @@
 
 namespace pg
 {
+  namespace
+  {
+    /**
+     * The rows of a particle with a unit direction @p v (the normal of a
+     * face, or the edge direction of a 3-D edge): @p v goes into row @p
+     * along[a] of the component a in which |v| is largest (|v_a| >=
+     * 1/sqrt(dim)), and into every other row i of @p across the unit
+     * projection of e_i onto the plane normal to v (its i-th component is
+     * sqrt(1 - v_i^2) >= 1/sqrt(2)). Every row so keeps a nonzero
+     * diagonal, which ILU needs.
+     */
+    template <int dim>
+    void
+    split_rows(const Tensor<1, dim> &v,
+               Tensor<2, dim>       &along,
+               Tensor<2, dim>       &across)
+    {
+      unsigned int axis = 0;
+      for (unsigned int c = 1; c < dim; ++c)
+        if (std::abs(v[c]) > std::abs(v[axis]))
+          axis = c;
+      along[axis] = v;
+      for (unsigned int i = 0; i < dim; ++i)
+        if (i != axis)
+          {
+            Tensor<1, dim> t = Point<dim>::unit_vector(i);
+            t -= (t * v) * v;
+            across[i] = t / t.norm();
+          }
+    }
+  } // namespace
 
 
 
@@ -149,49 +180,20 @@ namespace pg
             // normals and the loads and supports of the faces can take it
             // (with alpha^k = 0 here d^k keeps a part along the edge that
             // neither a traction T (n . d^k) nor a symmetry plane carries).
-            // The equation takes the row of the component in which e is
-            // largest, the constraints c_j . alpha^k = 0 the other rows j,
-            // with c_j the unit projection of e_j onto the plane normal to
-            // e: nonzero diagonals, as on the faces below.
-            kind[k]                = Row::tangential;
-            R[k]                   = Tensor<2, dim>();
-            unsigned int edge_axis = 0;
-            for (unsigned int c = 1; c < dim; ++c)
-              if (std::abs(edge[c]) > std::abs(edge[edge_axis]))
-                edge_axis = c;
-            R[k][edge_axis] = edge;
-            for (unsigned int j = 0; j < dim; ++j)
-              if (j != edge_axis)
-                {
-                  Tensor<1, dim> c = Point<dim>::unit_vector(j);
-                  c -= (c * edge) * edge;
-                  constraint[k][j] = c / c.norm();
-                }
+            // The equation e . d^k = 0 in one row, the constraints
+            // c_j . alpha^k = 0 in the others.
+            kind[k] = Row::tangential;
+            R[k]    = Tensor<2, dim>();
+            split_rows(edge, R[k], constraint[k]);
           }
         else if (formulation.vc_boundary == VCBoundary::sn)
           {
-            // The constraint n . alpha^k = 0 takes the row of the component
-            // in which n is largest, and t_i . d^k = 0 the other rows i,
-            // with t_i the unit projection of e_i onto the tangent plane:
-            // every row keeps a nonzero diagonal (|n_i| >= 1/sqrt(dim) and
-            // t_i . e_i >= sqrt(1 - 1/dim) ... > 0), which ILU and the AMG
-            // smoothers of the iterative solve need (t_i . e_i = sqrt(1 -
-            // n_i^2) >= 1/sqrt(2)). Any basis of the
+            // A face: the constraint n . alpha^k = 0 in one row, the
+            // equations t_i . d^k = 0 in the others. Any basis of the
             // tangent plane gives the same factors.
-            kind[k]                  = Row::tangential;
-            R[k]                     = Tensor<2, dim>();
-            unsigned int normal_axis = 0;
-            for (unsigned int c = 1; c < dim; ++c)
-              if (std::abs(normal[k][c]) > std::abs(normal[k][normal_axis]))
-                normal_axis = c;
-            constraint[k][normal_axis] = normal[k];
-            for (unsigned int i = 0; i < dim; ++i)
-              if (i != normal_axis)
-                {
-                  Tensor<1, dim> t = Point<dim>::unit_vector(i);
-                  t -= (t * normal[k]) * normal[k];
-                  R[k][i] = t / t.norm();
-                }
+            kind[k] = Row::tangential;
+            R[k]    = Tensor<2, dim>();
+            split_rows(normal[k], constraint[k], R[k]);
           }
       }
     for (unsigned int k = 0; k < n; ++k)
