@@ -19,17 +19,22 @@ namespace pg
     std::ostringstream line;
     line << std::scientific << std::setprecision(2);
     double reference = 0, first_energy = 0, last_energy = 0;
+    // run an assembly; on failure record it as the outcome
+    const auto assembly_failed =
+      [&](const std::function<std::string()> &assemble) {
+        result.failure = assemble();
+        if (result.failure.empty())
+          return false;
+        result.outcome = Outcome::assembly_failed;
+        result.history = line.str();
+        return true;
+      };
     for (unsigned int it = 0; it <= parameters.maximum_iterations; ++it)
       {
-        result.failure = operations.assemble_residual ?
-                           operations.assemble_residual() :
-                           operations.assemble();
-        if (!result.failure.empty())
-          {
-            result.outcome = Outcome::assembly_failed;
-            result.history = line.str();
-            return result;
-          }
+        if (assembly_failed(operations.assemble_residual ?
+                              operations.assemble_residual :
+                              operations.assemble))
+          return result;
         const double residual = operations.residual_norm();
         result.residuals.push_back(residual);
         if (it == 0)
@@ -66,16 +71,9 @@ namespace pg
         if (it == parameters.maximum_iterations)
           break;
 
-        if (operations.assemble_residual)
-          {
-            result.failure = operations.assemble();
-            if (!result.failure.empty())
-              {
-                result.outcome = Outcome::assembly_failed;
-                result.history = line.str();
-                return result;
-              }
-          }
+        if (operations.assemble_residual &&
+            assembly_failed(operations.assemble))
+          return result;
         double energy = 0;
         if (!operations.solve_and_update(energy))
           {
