@@ -87,6 +87,34 @@ namespace pg
                    I_1 / 3. * Finv[b][k] * Finv[d][a] +
                    2. * I_1 / 9. * Finv[b][a] * Finv[d][k]);
       }
+
+
+
+      /**
+       * Add P_vol = K/2 (J^2 - 1) F^-T to @p P and, unless @p A is nullptr,
+       * A_vol = K J^2 Finv_BA Finv_DC - K/2 (J^2 - 1) Finv_BC Finv_DA to *A.
+       */
+      template <int dim>
+      void
+      add_volumetric_part(const double          kappa,
+                          const double          J,
+                          const Tensor<2, dim> &Finv,
+                          Tensor<2, dim>       &P,
+                          Tensor<4, dim>       *A)
+      {
+        const double c        = 0.5 * kappa * (J * J - 1.);
+        const double kappa_J2 = kappa * J * J;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            {
+              P[a][b] += c * Finv[b][a];
+              if (A != nullptr)
+                for (unsigned int k = 0; k < dim; ++k)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    (*A)[a][b][k][d] += kappa_J2 * Finv[b][a] * Finv[d][k] -
+                                        c * Finv[b][k] * Finv[d][a];
+            }
+      }
     } // namespace IsoVol
 
 
@@ -116,20 +144,7 @@ namespace pg
       const double         J    = checked_jacobian(F, IsoVol::model_name);
       const Tensor<2, dim> Finv = invert(F);
       IsoVol::isochoric_part(mu, F, J, Finv, IsoVol::first_invariant(F), P, &A);
-
-      // P_vol = K/2 (J^2 - 1) F^-T,
-      // A_vol = K J^2 Finv_BA Finv_DC - K/2 (J^2 - 1) Finv_BC Finv_DA.
-      const double c        = 0.5 * kappa * (J * J - 1.);
-      const double kappa_J2 = kappa * J * J;
-      for (unsigned int a = 0; a < dim; ++a)
-        for (unsigned int b = 0; b < dim; ++b)
-          {
-            P[a][b] += c * Finv[b][a];
-            for (unsigned int k = 0; k < dim; ++k)
-              for (unsigned int d = 0; d < dim; ++d)
-                A[a][b][k][d] += kappa_J2 * Finv[b][a] * Finv[d][k] -
-                                 c * Finv[b][k] * Finv[d][a];
-          }
+      IsoVol::add_volumetric_part(kappa, J, Finv, P, &A);
     }
 
 
@@ -149,11 +164,7 @@ namespace pg
                                   IsoVol::first_invariant(F),
                                   P,
                                   nullptr);
-
-      const double c = 0.5 * kappa * (J * J - 1.);
-      for (unsigned int a = 0; a < dim; ++a)
-        for (unsigned int b = 0; b < dim; ++b)
-          P[a][b] += c * Finv[b][a];
+      IsoVol::add_volumetric_part<dim>(kappa, J, Finv, P, nullptr);
       return P;
     }
 
