@@ -55,7 +55,7 @@ namespace pg
       double      tolerance;
       /** ML's near-null space: rigid body modes | translations */
       std::string near_null_space;
-      /** The VC correction system: iterative | direct */
+      /** The VC correction system: automatic | direct */
       std::string vc_solver;
 
       static void
