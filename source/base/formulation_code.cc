@@ -12,11 +12,13 @@ namespace pg
       "[TL]' (Table 7.1) with <method> = PBG, PPG (= PPG1), PPG1 or PPG2, "
       "the VC correction function V1, V3 or V5 (default V3 for PPG, V5 for "
       "PBG, V1 for VC2) and its boundary option <b> = p, s or sn (default "
-      "sn; VC2 takes s), and <points> = Unl (default), U1 (PBG only) or U2. "
+      "sn; VC2 takes s), and <points> = Unl (default), U1 (PBG only), U2 "
+      "or UnlP0 (mixed, PBG or PPG). "
       "The bond correction BC is the default of Unl; 'noBC' switches it "
       "off. E.g. 'VCPPG V3sn Unl' (= 'VCBCPPG V3sn Unl TL'), 'VCPBG Unl' "
       "(= 'VCBCPBG V5sn Unl TL'), 'PBG Unl noBC', 'PBG U1', "
-      "'VC2PPG V1s U2'; or 'FEM' or 'CPD'.";
+      "'VC2PPG V1s U2', 'VCPPG V3sn UnlP0'; or 'FEM' (Q1/H1), 'FEM Q1P0' "
+      "(H1P0 in 3-D) or 'CPD'.";
 
 
 
@@ -47,8 +49,11 @@ namespace pg
     std::string
     resolved_text(const FormulationCode &code)
     {
-      using Method = FormulationCode::Method;
-      if (code.method == Method::fem || code.method == Method::cpd)
+      using Method  = FormulationCode::Method;
+      const bool p0 = (code.fields == FormulationCode::Fields::condensed_p0);
+      if (code.method == Method::fem)
+        return p0 ? "FEM Q1P0" : "FEM";
+      if (code.method == Method::cpd)
         return code.method_name();
       std::string text = code.second_order_consistency ? "VC2" :
                          code.variational_consistency  ? "VC" :
@@ -70,7 +75,8 @@ namespace pg
                    code.vc_boundary == B::s ? "s" :
                                               "sn");
         }
-      text += (code.points == FormulationCode::Points::unl ? " Unl" :
+      text += (p0                                          ? " UnlP0" :
+               code.points == FormulationCode::Points::unl ? " Unl" :
                code.points == FormulationCode::Points::u1  ? " U1" :
                                                              " U2");
       if (code.points == FormulationCode::Points::unl && !code.bond_correction)
@@ -187,8 +193,21 @@ namespace pg
         result.method = FormulationCode::Method::fem;
         if (result.bond_correction || result.variational_consistency)
           reject(code, "FEM takes no corrections.");
-        if (words.size() > 1)
-          reject(code, "FEM takes no further parts.");
+        if (words.size() > 2)
+          reject(code,
+                 "FEM takes at most one further part, the element: Q1 "
+                 "(default; H1 in 3-D) or Q1P0 (H1P0 in 3-D).");
+        if (words.size() == 2)
+          {
+            if (words[1] == "Q1P0" || words[1] == "H1P0")
+              result.fields = FormulationCode::Fields::condensed_p0;
+            else if (words[1] != "Q1" && words[1] != "H1")
+              reject(code,
+                     "the element <" + words[1] +
+                       "> is unknown; FEM takes Q1 (default; H1 in 3-D) or "
+                       "Q1P0 (H1P0 in 3-D).");
+          }
+        result.text = resolved_text(result);
         return result;
       }
     else
@@ -198,14 +217,16 @@ namespace pg
     for (unsigned int i = 1; i < words.size(); ++i)
       {
         const std::string &w = words[i];
-        if (w == "Unl" || w == "U1" || w == "U2")
+        if (w == "Unl" || w == "U1" || w == "U2" || w == "UnlP0")
           {
             if (have_points)
               reject(code, "it names two formulations.");
             have_points   = true;
-            result.points = (w == "Unl" ? FormulationCode::Points::unl :
-                             w == "U1"  ? FormulationCode::Points::u1 :
-                                          FormulationCode::Points::u2);
+            result.points = (w == "U1" ? FormulationCode::Points::u1 :
+                             w == "U2" ? FormulationCode::Points::u2 :
+                                         FormulationCode::Points::unl);
+            if (w == "UnlP0")
+              result.fields = FormulationCode::Fields::condensed_p0;
           }
         else if (w == "noBC")
           {
@@ -251,7 +272,7 @@ namespace pg
                      "the VC boundary option <" + option +
                        "> is unknown; use p, s or sn.");
           }
-        else if (w == "UnlP0" || w == "IUnlP0" || w == "U2P1" || w == "U2P1C" ||
+        else if (w == "IUnlP0" || w == "U2P1" || w == "U2P1C" ||
                  w == "Unl+P1C" || w == "U1SUnl" || w == "U1SIG")
           reject(code, "the formulation <" + w + "> is not yet available.");
         else
@@ -287,6 +308,13 @@ namespace pg
                  "V5 (the bond projector) belongs to PBG; use V1 or V3 "
                  "with VC2.");
       }
+    if (result.fields == FormulationCode::Fields::condensed_p0 &&
+        result.method == FormulationCode::Method::ppg2)
+      reject(code,
+             "UnlP0 is defined for PBG and PPG (= PPG1) (eqs. 6.2, 6.3, "
+             "6.7): its volumetric point at the master has the test "
+             "functions of PPG1, whose VC condition PPG2 does not satisfy. "
+             "Write 'VCPPG V3sn UnlP0' or 'VCPBG V5sn UnlP0'.");
     if (result.points == FormulationCode::Points::u1 &&
         result.method != FormulationCode::Method::pbg)
       reject(code,
@@ -299,7 +327,9 @@ namespace pg
     // destroy (section 5.3.1). doc/ambiguities.md has the reading.
     if (result.points == FormulationCode::Points::unl)
       {
-        if (!result.bond_correction && !no_bc)
+        // (UnlP0 is newer than that change: no notice)
+        if (!result.bond_correction && !no_bc &&
+            result.fields == FormulationCode::Fields::displacement)
           result.bond_correction_by_default = true;
         result.bond_correction = !no_bc;
       }

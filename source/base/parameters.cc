@@ -1,4 +1,5 @@
 #include <pg/base/exceptions.h>
+#include <pg/base/formulation_code.h>
 #include <pg/base/parameters.h>
 
 #include <deal.II/base/utilities.h>
@@ -290,6 +291,24 @@ namespace pg
                   ExcBadParameter("Material/Plane",
                                   material.plane,
                                   "plane stress exists in 2-D only."));
+      // The mixed codes (UnlP0, FEM Q1P0) condense p and Theta per element
+      // with the isochoric/volumetric split.
+      const FormulationCode code =
+        parse_formulation_code(discretization.formulation);
+      AssertThrow(code.fields != FormulationCode::Fields::condensed_p0 ||
+                    material.model == "isochoric-volumetric neo-Hooke",
+                  ExcBadParameter(
+                    "Material/Model",
+                    material.model,
+                    "the formulation <" + code.text +
+                      "> (subsection 'Discretization') is mixed: it "
+                      "condenses a pressure and a dilatation per element "
+                      "(eqs. 6.2, 6.3), which needs the isochoric/volumetric "
+                      "split of eqs. 2.43-2.44. Set 'Model = "
+                      "isochoric-volumetric neo-Hooke' (with 'Bulk modulus' "
+                      "and 'Shear modulus', or 'Young's modulus' and "
+                      "'Poisson's ratio') or choose a displacement "
+                      "formulation."));
     }
 
 

@@ -242,6 +242,40 @@ namespace pg
 
 
   template <int dim>
+  const std::vector<Tensor<1, dim>> &
+  FamilyElements<dim>::master_test_gradients(const unsigned int k) const
+  {
+    if (formulation.method == FormulationCode::Method::pbg)
+      return master_gradients(k);
+    AssertIndexRange(k, master_test.size());
+    Assert(!master_test[k].empty(),
+           ExcMessage("Family data not computed on this rank (initialize())."));
+    return master_test[k];
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyElements<dim>::build_master_table(const unsigned int    k,
+                                          QuadratureTable<dim> &table) const
+  {
+    const bool bubnov_galerkin =
+      (formulation.method == FormulationCode::Method::pbg);
+    const auto &trial = master_gradients(k);
+    table.reinit(trial.size(), bubnov_galerkin);
+    table.add_point(particles.volume(k), trial, particles.position(k));
+    if (!bubnov_galerkin)
+      {
+        const auto &test = master_test_gradients(k);
+        for (unsigned int a = 0; a < test.size(); ++a)
+          table.add_test_vector(a, test[a]);
+      }
+  }
+
+
+
+  template <int dim>
   void
   FamilyElements<dim>::build(const unsigned int    k,
                              QuadratureTable<dim> &table) const

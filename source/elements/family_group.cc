@@ -1,4 +1,5 @@
 #include <pg/base/global_reader.h>
+#include <pg/elements/condensed_pressure.h>
 #include <pg/elements/family_group.h>
 
 namespace pg
@@ -16,6 +17,8 @@ namespace pg
       }
 
       std::vector<Tensor<1, dim>> y;
+      /** The volumetric point of a PPG UnlP0 family. */
+      QuadratureTable<dim> master_table;
     };
   } // namespace
 
@@ -112,14 +115,18 @@ namespace pg
 
   template <int dim>
   FamilyGroup<dim>::FamilyGroup(
-    const std::vector<unsigned int>         &owned_families,
-    const FamilySet<dim>                    &families,
-    const ParticleSet<dim>                  &particles,
-    const std::vector<QuadratureTable<dim>> &family_tables,
-    const Materials::Material<dim>          &material)
+    const std::vector<unsigned int>                   &owned_families,
+    const FamilySet<dim>                              &families,
+    const ParticleSet<dim>                            &particles,
+    const std::vector<QuadratureTable<dim>>           &family_tables,
+    const Materials::Material<dim>                    &material,
+    const Materials::IsochoricVolumetricNeoHooke<dim> *condensed_pressure,
+    const FamilyElements<dim>                         *family_elements)
     : FamilyGroupBase<dim>(owned_families, families, particles)
     , family_tables(family_tables)
     , material(material)
+    , condensed_pressure(condensed_pressure)
+    , family_elements(family_elements)
   {}
 
 
@@ -128,7 +135,8 @@ namespace pg
   std::string
   FamilyGroup<dim>::name() const
   {
-    return "PG families";
+    return condensed_pressure != nullptr ? "PG families (UnlP0)" :
+                                           "PG families";
   }
 
 
@@ -161,6 +169,21 @@ namespace pg
   {
     auto &scratch = static_cast<FamilyScratch<dim> &>(scratch_base);
     this->gather(e, u, local.dofs, scratch.y);
+    if (condensed_pressure != nullptr)
+      {
+        const bool master_point = (family_elements != nullptr);
+        if (master_point)
+          family_elements->build_master_table(this->owned_families[e],
+                                              scratch.master_table);
+        assemble_condensed_pressure_element(
+          family_tables[e],
+          master_point ? &scratch.master_table : nullptr,
+          scratch.y,
+          *condensed_pressure,
+          local.residual,
+          local.with_matrix ? &local.matrix : nullptr);
+        return;
+      }
     assemble_element(family_tables[e],
                      scratch.y,
                      material,

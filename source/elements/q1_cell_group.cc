@@ -1,4 +1,5 @@
 #include <pg/base/global_reader.h>
+#include <pg/elements/condensed_pressure.h>
 #include <pg/elements/q1_cell.h>
 #include <pg/elements/q1_cell_group.h>
 #include <pg/elements/quadrature_table.h>
@@ -40,12 +41,15 @@ namespace pg
 
 
   template <int dim>
-  Q1CellGroup<dim>::Q1CellGroup(const std::vector<CellIterator> &cells,
-                                const Materials::Material<dim>  &material,
-                                const Loads<dim>                &loads)
+  Q1CellGroup<dim>::Q1CellGroup(
+    const std::vector<CellIterator>                   &cells,
+    const Materials::Material<dim>                    &material,
+    const Loads<dim>                                  &loads,
+    const Materials::IsochoricVolumetricNeoHooke<dim> *condensed_pressure)
     : cells(cells)
     , material(material)
     , loads(loads)
+    , condensed_pressure(condensed_pressure)
     , fe_scalar(1)
   {}
 
@@ -55,7 +59,9 @@ namespace pg
   std::string
   Q1CellGroup<dim>::name() const
   {
-    return "Q1 cells";
+    if (condensed_pressure == nullptr)
+      return "Q1 cells";
+    return dim == 2 ? "Q1P0 cells" : "H1P0 cells";
   }
 
 
@@ -121,13 +127,23 @@ namespace pg
       for (unsigned int c = 0; c < dim; ++c)
         scratch.y[b][c] = cell->vertex(b)[c] - cell->vertex(0)[c] +
                           u_at[local.dofs[b * dim + c]];
-    assemble_element(scratch.table,
-                     scratch.y,
-                     material,
-                     local.residual,
-                     local.with_matrix ? &local.matrix : nullptr,
-                     history.committed,
-                     history.trial);
+    if (condensed_pressure != nullptr)
+      assemble_condensed_pressure_element<dim>(scratch.table,
+                                               nullptr,
+                                               scratch.y,
+                                               *condensed_pressure,
+                                               local.residual,
+                                               local.with_matrix ?
+                                                 &local.matrix :
+                                                 nullptr);
+    else
+      assemble_element(scratch.table,
+                       scratch.y,
+                       material,
+                       local.residual,
+                       local.with_matrix ? &local.matrix : nullptr,
+                       history.committed,
+                       history.trial);
     loads.add_body_force(scratch.fe_values, local.residual);
     loads.add_face_tractions(cell, scratch.fe_face_values, local.residual);
   }

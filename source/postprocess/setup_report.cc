@@ -39,11 +39,19 @@ namespace pg
             }
           mean_family /= families.n_families();
         }
-      pcout << "pg_solve: " << dim << "-D, formulation '" << formulation.text
+      const bool p0 =
+        (formulation.fields == FormulationCode::Fields::condensed_p0);
+      // Q1P0 is called H1P0 in 3-D (Table 7.4)
+      pcout << "pg_solve: " << dim << "-D, formulation '"
+            << (formulation.method == FormulationCode::Method::fem && p0 &&
+                    dim == 3 ?
+                  std::string("FEM H1P0") :
+                  formulation.text)
             << "'";
       if (formulation.method != FormulationCode::Method::fem && !cpd)
         pcout << " (" << formulation.method_name() << ", "
-              << (formulation.points == FormulationCode::Points::unl ? "Unl" :
+              << (p0                                                 ? "UnlP0" :
+                  formulation.points == FormulationCode::Points::unl ? "Unl" :
                   formulation.points == FormulationCode::Points::u1  ? "U1" :
                                                                        "U2")
               << ", "
@@ -74,12 +82,29 @@ namespace pg
           else
             pcout << ", E = " << prm.material.youngs_modulus
                   << ", nu = " << prm.material.poissons_ratio;
+          // Volumetric locking: the displacement formulations constrain
+          // the volume at every evaluation point; its measure is K / mu.
+          const double locking =
+            (prm.material.lambda() + 2. / 3. * prm.material.mu()) /
+            prm.material.mu();
+          if (!p0 && prm.material.poissons_ratio >= 0.49 &&
+              (dim == 3 || prm.material.plane != "stress"))
+            pcout << "\n  Warning: nu = " << prm.material.poissons_ratio
+                  << " (K/mu = " << locking
+                  << ") is nearly incompressible, and the displacement "
+                     "formulation locks volumetrically (too stiff, "
+                     "oscillating pressure). Use a mixed code in "
+                     "'Discretization/Formulation' ('FEM Q1P0', "
+                     "'VCPPG V3sn UnlP0', 'VCPBG V5sn UnlP0') with 'Model "
+                     "= isochoric-volumetric neo-Hooke'.";
         }
       pcout << "\n"
             << "  cells:           "
             << discretization.triangulation.n_active_cells() << " ("
-            << summary.n_fe_cells << " finite elements, "
-            << summary.n_meshfree_cells << " meshfree)\n"
+            << summary.n_fe_cells << " finite elements"
+            << (p0 && summary.n_fe_cells > 0 ? (dim == 2 ? " Q1P0" : " H1P0") :
+                                               "")
+            << ", " << summary.n_meshfree_cells << " meshfree)\n"
             << discretization.mesh_notes
             << "  particles:       " << particles.n_particles() << "\n";
       if (families.n_families() > 0 && prm.discretization.horizon > 0)

@@ -102,9 +102,22 @@ namespace pg
                                            owned_dofs);
 
     // The element groups: Q1 cells first, then the families (PG or CPD).
+    // The mixed codes (UnlP0, FEM Q1P0) condense p and Theta per element
+    // with the isochoric/volumetric split of the material.
+    const Materials::IsochoricVolumetricNeoHooke<dim> *condensed_pressure =
+      nullptr;
+    if (formulation.fields == FormulationCode::Fields::condensed_p0)
+      {
+        condensed_pressure =
+          dynamic_cast<const Materials::IsochoricVolumetricNeoHooke<dim> *>(
+            &material);
+        // AllParameters::parse_parameters() checked the model
+        AssertThrow(condensed_pressure != nullptr, ExcInternalError());
+      }
     q1_cells = std::make_unique<Q1CellGroup<dim>>(discretization.owned_fe_cells,
                                                   material,
-                                                  loads);
+                                                  loads,
+                                                  condensed_pressure);
     if (discretization.cpd)
       family_group =
         std::make_unique<CpdGroup<dim>>(discretization.owned_families,
@@ -112,12 +125,17 @@ namespace pg
                                         particles,
                                         *discretization.cpd);
     else
-      family_group =
-        std::make_unique<FamilyGroup<dim>>(discretization.owned_families,
-                                           discretization.families,
-                                           particles,
-                                           discretization.family_tables,
-                                           material);
+      family_group = std::make_unique<FamilyGroup<dim>>(
+        discretization.owned_families,
+        discretization.families,
+        particles,
+        discretization.family_tables,
+        material,
+        condensed_pressure,
+        (condensed_pressure != nullptr &&
+         formulation.method != FormulationCode::Method::pbg) ?
+          discretization.family_elements.get() :
+          nullptr);
     assembler = std::make_unique<Assembler<dim>>(
       zero_constraints,
       std::vector<ElementGroup<dim> *>{q1_cells.get(), family_group.get()});

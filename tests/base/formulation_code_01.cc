@@ -3,7 +3,8 @@
 // formulation (Unl), V3 of PPG, V5 of PBG, sn and TL. Printed for each
 // code: the resolved code (which must parse to itself), the bond
 // correction, and whether the one-line notice of a changed default is
-// given. Then the codes that must be refused, with their reasons.
+// given. Then the codes that must be refused, with their reasons. The
+// mixed codes UnlP0 and FEM Q1P0 / H1P0 (issue 13) are among both.
 
 #include <pg/base/formulation_code.h>
 
@@ -38,7 +39,15 @@ main()
                                  "PBG U1 noBC",
                                  "PBG",
                                  "FEM",
-                                 "CPD"})
+                                 "CPD",
+                                 "VCPPG V3sn UnlP0",
+                                 "VCPBG UnlP0",
+                                 "PBG UnlP0 noBC",
+                                 "VCPPG V1sn UnlP0",
+                                 "FEM Q1",
+                                 "FEM H1",
+                                 "FEM Q1P0",
+                                 "FEM H1P0"})
     {
       const FormulationCode f     = parse_formulation_code(code);
       const FormulationCode again = parse_formulation_code(f.text);
@@ -47,7 +56,8 @@ main()
         again.method == f.method && again.points == f.points &&
         again.variational_consistency == f.variational_consistency &&
         again.correction_function == f.correction_function &&
-        again.vc_boundary == f.vc_boundary && !again.bond_correction_by_default;
+        again.vc_boundary == f.vc_boundary && again.fields == f.fields &&
+        !again.bond_correction_by_default;
       deallog << std::left << std::setw(20) << code << " -> " << std::setw(22)
               << f.text << " BC " << (f.bond_correction ? "on " : "off")
               << (f.notice().empty() ? "" : ", notice")
@@ -67,7 +77,13 @@ main()
                                  "PPG U1",
                                  "VCPPG Unl UL",
                                  "PBG Unl U2",
-                                 "XPBG Unl"})
+                                 "XPBG Unl",
+                                 "VCPPG2 V3sn UnlP0",
+                                 "PBG UnlP0 Unl",
+                                 "PBG IUnlP0",
+                                 "PBG U2P1",
+                                 "FEM Q2",
+                                 "FEM Q1P0 H1P0"})
     try
       {
         parse_formulation_code(code);

@@ -13,9 +13,10 @@ namespace pg
    * table's defaults: BC for every first-order formulation (Unl; U1 has no
    * bond to correct, U2 is second order), V3 for PPG, V5 for PBG, the
    * boundary option sn, TL. "noBC" switches the bond correction off. Parts
-   * that are not built yet (V2, V4, the mixed formulations, UL) are
-   * rejected with a "not yet available" message, never ignored. The
-   * readings where the table is silent are in doc/ambiguities.md.
+   * that are not built yet (V2, V4, the mixed formulations other than
+   * UnlP0 and Q1P0/H1P0, UL) are rejected with a "not yet available" message,
+   * never ignored. The readings where the table is silent are in
+   * doc/ambiguities.md.
    */
   struct FormulationCode
   {
@@ -37,6 +38,21 @@ namespace pg
       u2   //!< every member, quadratic WTE2 shape functions (section 6.5)
     };
 
+    /**
+     * The fields besides the displacement (Table 7.1, pg-methods.md section
+     * 12.2).
+     */
+    enum class Fields
+    {
+      displacement, //!< u only (Unl, U1, U2; FEM = Q1 in 2-D, H1 in 3-D)
+      /**
+       * u with the pressure p and the dilatation Theta constant per element
+       * and condensed: UnlP0 (eq. 6.9, per family) and, for FEM and the
+       * FE cells of a coupled model, Q1P0 (2-D) / H1P0 (3-D) per cell
+       */
+      condensed_p0
+    };
+
     /** The VC correction function (eqs. 5.60-5.64). */
     enum class CorrectionFunction
     {
@@ -55,6 +71,11 @@ namespace pg
 
     Method method;
     Points points;
+    /**
+     * The mixed fields. They also decide the FE cells of a coupled model:
+     * Q1P0/H1P0 cells with UnlP0 families, Q1 cells otherwise.
+     */
+    Fields fields = Fields::displacement;
     /** First-order variational consistency (section 11). */
     bool variational_consistency;
     /**

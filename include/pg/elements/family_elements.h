@@ -77,6 +77,23 @@ namespace pg
     master_gradients(const unsigned int k) const;
 
     /**
+     * Effective test gradients of family @p k at its master, one per
+     * member: G^{kka} of PPG (VC-corrected after set_correction_factors()),
+     * the trial ones for PBG. The volumetric point of PPG UnlP0 (eq. 6.7).
+     */
+    const std::vector<Tensor<1, dim>> &
+    master_test_gradients(const unsigned int k) const;
+
+    /**
+     * The one-point table of family @p k at its master: weight V^k, the
+     * master gradients as trial and test vectors (for PPG the test ones
+     * apart). The volumetric point of PPG UnlP0 (pg-methods.md section
+     * 12.2).
+     */
+    void
+    build_master_table(const unsigned int k, QuadratureTable<dim> &table) const;
+
+    /**
      * The blocks of the VC system (pg-methods.md section 11.4) that family
      * @p k contributes: the unit-stress residual depends linearly on the
      * correction factors, d^a(alpha) = d^a(0) + sum_f C^{af} alpha^f, and

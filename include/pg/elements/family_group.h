@@ -3,8 +3,10 @@
 
 #include <pg/elements/cpd_interactions.h>
 #include <pg/elements/element_group.h>
+#include <pg/elements/family_elements.h>
 #include <pg/elements/quadrature_table.h>
 #include <pg/families/family_set.h>
+#include <pg/materials/isochoric_volumetric_neo_hooke.h>
 #include <pg/materials/material.h>
 #include <pg/mesh/particle_set.h>
 
@@ -59,7 +61,11 @@ namespace pg
 
   /**
    * The PG families (PPG, PBG, VC, BC ...: whatever the family tables
-   * hold): the common kernel on each family's quadrature table.
+   * hold): the common kernel on each family's quadrature table. With a
+   * @p condensed_pressure material the families are UnlP0 (eq. 6.9):
+   * assemble_condensed_pressure_element() with p and Theta constant per
+   * family, the volumetric points being the table's (PBG) or the master
+   * (PPG, from @p family_elements).
    */
   template <int dim>
   class FamilyGroup : public FamilyGroupBase<dim>
@@ -69,7 +75,10 @@ namespace pg
                 const FamilySet<dim>                    &families,
                 const ParticleSet<dim>                  &particles,
                 const std::vector<QuadratureTable<dim>> &family_tables,
-                const Materials::Material<dim>          &material);
+                const Materials::Material<dim>          &material,
+                const Materials::IsochoricVolumetricNeoHooke<dim>
+                                          *condensed_pressure = nullptr,
+                const FamilyElements<dim> *family_elements    = nullptr);
 
     std::string
     name() const override;
@@ -88,8 +97,11 @@ namespace pg
              LocalSystem                 &local) const override;
 
   private:
-    const std::vector<QuadratureTable<dim>> &family_tables;
-    const Materials::Material<dim>          &material;
+    const std::vector<QuadratureTable<dim>>           &family_tables;
+    const Materials::Material<dim>                    &material;
+    const Materials::IsochoricVolumetricNeoHooke<dim> *condensed_pressure;
+    /** For the master tables of PPG UnlP0; nullptr otherwise. */
+    const FamilyElements<dim> *family_elements;
   };
 
 

@@ -3,6 +3,7 @@
 
 #include <pg/assembly/loads.h>
 #include <pg/elements/element_group.h>
+#include <pg/materials/isochoric_volumetric_neo_hooke.h>
 #include <pg/materials/material.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -23,9 +24,16 @@ namespace pg
   public:
     using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
 
+    /**
+     * With a @p condensed_pressure material the cells are Q1P0 (2-D) /
+     * H1P0 (3-D): p and Theta constant per cell and condensed
+     * (assemble_condensed_pressure_element(), deal.II's step-44).
+     */
     Q1CellGroup(const std::vector<CellIterator> &cells,
                 const Materials::Material<dim>  &material,
-                const Loads<dim>                &loads);
+                const Loads<dim>                &loads,
+                const Materials::IsochoricVolumetricNeoHooke<dim>
+                  *condensed_pressure = nullptr);
 
     std::string
     name() const override;
@@ -60,10 +68,11 @@ namespace pg
     non_finite_hint() const override;
 
   private:
-    const std::vector<CellIterator> &cells;
-    const Materials::Material<dim>  &material;
-    const Loads<dim>                &loads;
-    const FE_Q<dim>                  fe_scalar;
+    const std::vector<CellIterator>                   &cells;
+    const Materials::Material<dim>                    &material;
+    const Loads<dim>                                  &loads;
+    const Materials::IsochoricVolumetricNeoHooke<dim> *condensed_pressure;
+    const FE_Q<dim>                                    fe_scalar;
   };
 } // namespace pg
 

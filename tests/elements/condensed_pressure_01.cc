@@ -1,0 +1,294 @@
+// The condensed-pressure elements (UnlP0 for PBG and PPG, Q1P0 / H1P0) of
+// assemble_condensed_pressure_element(), pg-methods.md section 12.2.1:
+// - the residual is the gradient of the condensed potential
+//   Pi = sum_q w_q W_iso(F_q) + W W_vol(J-bar) (central differences of Pi,
+//   computed here independently of the kernel), for PBG and Q1P0 (the
+//   Bubnov-Galerkin elements that have a potential);
+// - the tangent agrees with central differences of the residual (every
+//   element, PPG's non-symmetric one included);
+// - rigid motions give zero residual;
+// - under a homogeneous deformation J-bar = J, and the element equals the
+//   displacement element of the isochoric-volumetric material;
+// at nu = 0.3 and nu = 0.4999, on an interior and a corner family of a
+// distorted particle set (BCPBG, BCPPG), and on Q1 cells, in 2-D and 3-D.
+
+#include <pg/base/formulation_code.h>
+#include <pg/elements/condensed_pressure.h>
+#include <pg/elements/family_elements.h>
+#include <pg/elements/q1_cell.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include "../particle_fixture.h"
+#include "../tests.h"
+
+using namespace pg;
+
+template <int dim>
+Tensor<2, dim>
+rotation(const double angle)
+{
+  Tensor<2, dim> R;
+  if constexpr (dim == 2)
+    {
+      R[0][0] = R[1][1] = std::cos(angle);
+      R[0][1]           = -std::sin(angle);
+      R[1][0]           = std::sin(angle);
+    }
+  else
+    {
+      // about the x axis and then the z axis
+      const double c = std::cos(angle), s = std::sin(angle);
+      Tensor<2, 3> Rx, Rz;
+      Rx[0][0] = 1, Rx[1][1] = Rx[2][2] = c, Rx[1][2] = -s, Rx[2][1] = s;
+      Rz[2][2] = 1, Rz[0][0] = Rz[1][1] = c, Rz[0][1] = -s, Rz[1][0] = s;
+      R = Rz * Rx;
+    }
+  return R;
+}
+
+
+
+template <int dim>
+std::unique_ptr<Materials::IsochoricVolumetricNeoHooke<dim>>
+make_isovol(const double nu)
+{
+  Parameters::Material parameters;
+  parameters.model          = "isochoric-volumetric neo-Hooke";
+  parameters.youngs_modulus = 100.;
+  parameters.poissons_ratio = nu;
+  parameters.density        = 1.;
+  parameters.plane          = "strain";
+  return std::make_unique<Materials::IsochoricVolumetricNeoHooke<dim>>(
+    parameters);
+}
+
+
+
+/** The condensed potential, written out independently of the kernel. */
+template <int dim>
+double
+potential(const QuadratureTable<dim>                        &table,
+          const QuadratureTable<dim>                        &volumetric,
+          const std::vector<Tensor<1, dim>>                 &y,
+          const Materials::IsochoricVolumetricNeoHooke<dim> &material)
+{
+  double Pi = 0;
+  for (unsigned int q = 0; q < table.n_points(); ++q)
+    Pi += table.weights[q] * material.isochoric_strain_energy_density(
+                               deformation_gradient(table, q, y));
+  double W = 0, WJ = 0;
+  for (unsigned int q = 0; q < volumetric.n_points(); ++q)
+    {
+      W += volumetric.weights[q];
+      WJ += volumetric.weights[q] *
+            determinant(deformation_gradient(volumetric, q, y));
+    }
+  return Pi + W * material.volumetric_strain_energy_density(WJ / W);
+}
+
+
+
+struct Errors
+{
+  double tangent     = 0; // |K - FD(r)| / |K|
+  double potential   = 0; // |r - FD(Pi)| / |r| (Bubnov-Galerkin only)
+  double rigid       = 0; // |r(rigid)| / force scale
+  double homogeneous = 0; // |r - r_displacement| / |r| at a homogeneous F
+
+  void
+  max(const Errors &e)
+  {
+    tangent     = std::max(tangent, e.tangent);
+    potential   = std::max(potential, e.potential);
+    rigid       = std::max(rigid, e.rigid);
+    homogeneous = std::max(homogeneous, e.homogeneous);
+  }
+};
+
+
+
+/**
+ * Checks one element (isochoric points @p table, volumetric points
+ * @p volumetric, nullptr: the same) at the relative nodal positions @p X.
+ */
+template <int dim>
+Errors
+check_element(const QuadratureTable<dim>                        &table,
+              const QuadratureTable<dim>                        *volumetric,
+              const std::vector<Tensor<1, dim>>                 &X,
+              const Materials::IsochoricVolumetricNeoHooke<dim> &material,
+              const double                                       h,
+              std::mt19937                                      &rng)
+{
+  std::uniform_real_distribution<double> random(-1., 1.);
+  const unsigned int                     n = X.size();
+  std::vector<Tensor<1, dim>>            y(X);
+  for (auto &v : y)
+    for (unsigned int c = 0; c < dim; ++c)
+      v[c] += 0.05 * h * random(rng);
+  const auto residual = [&](const std::vector<Tensor<1, dim>> &at,
+                            Vector<double>                    &r,
+                            FullMatrix<double>                *K) {
+    assemble_condensed_pressure_element(table, volumetric, at, material, r, K);
+  };
+
+  Errors             errors;
+  Vector<double>     r, rp, rm;
+  FullMatrix<double> K;
+  residual(y, r, &K);
+  double       scale = 0, r_error = 0;
+  const double eps = 1e-6 * h;
+  for (unsigned int b = 0; b < n; ++b)
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        y[b][c] += eps;
+        residual(y, rp, nullptr);
+        const double Pi_p =
+          potential(table, volumetric ? *volumetric : table, y, material);
+        y[b][c] -= 2 * eps;
+        residual(y, rm, nullptr);
+        const double Pi_m =
+          potential(table, volumetric ? *volumetric : table, y, material);
+        y[b][c] += eps;
+        for (unsigned int i = 0; i < n * dim; ++i)
+          {
+            const double fd = (rp[i] - rm[i]) / (2 * eps);
+            errors.tangent =
+              std::max(errors.tangent, std::abs(fd - K(i, b * dim + c)));
+            scale = std::max(scale, std::abs(K(i, b * dim + c)));
+          }
+        r_error =
+          std::max(r_error,
+                   std::abs((Pi_p - Pi_m) / (2 * eps) - r[b * dim + c]));
+      }
+  errors.tangent /= scale;
+  if (volumetric == nullptr)
+    errors.potential = r_error / r.linfty_norm();
+
+  // rigid translation and rotation
+  const double                force_scale = 100. * std::pow(h, dim - 1);
+  std::vector<Tensor<1, dim>> moved(n);
+  const Tensor<2, dim>        R = rotation<dim>(0.7);
+  for (unsigned int b = 0; b < n; ++b)
+    for (unsigned int c = 0; c < dim; ++c)
+      moved[b][c] = (R * X[b])[c] + 0.3 * (c + 1) * h;
+  residual(moved, r, nullptr);
+  errors.rigid = r.linfty_norm() / force_scale;
+
+  // a homogeneous deformation: the displacement element of the same
+  // material (Bubnov-Galerkin tables: same points for both parts)
+  if (volumetric == nullptr)
+    {
+      Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          F[i][j] += 0.1 * random(rng);
+      for (unsigned int b = 0; b < n; ++b)
+        moved[b] = F * X[b];
+      Vector<double> r_displacement;
+      residual(moved, r, nullptr);
+      assemble_element(table, moved, material, r_displacement, nullptr);
+      r_displacement -= r;
+      errors.homogeneous = r_displacement.linfty_norm() / r.linfty_norm();
+    }
+  return errors;
+}
+
+
+
+template <int dim>
+void
+test()
+{
+  const ParticleFixture<dim> fixture(dim == 2 ? 6 : 4,
+                                     0.25,
+                                     dim == 2 ? 2.51 : 2.01);
+  const double                    h = 1. / (dim == 2 ? 6 : 4);
+  std::mt19937                    rng(7);
+  const std::vector<unsigned int> masters = {
+    fixture.closest(Point<dim>() + 0.5 * Point<dim>::unit_vector(0) +
+                    0.5 * Point<dim>::unit_vector(1) +
+                    (dim == 3 ? 0.5 : 0.) * Point<dim>::unit_vector(dim - 1)),
+    fixture.closest(Point<dim>())};
+
+  const auto report = [&](const std::string &name, const Errors &worst) {
+    const auto verdict = [](const double v, const double bound) {
+      std::ostringstream s;
+      if (v <= bound)
+        s << "yes";
+      else
+        s << "NO (" << v << ")";
+      return s.str();
+    };
+    deallog << dim << "d " << name
+            << ": tangent = FD(r): " << verdict(worst.tangent, 1e-6)
+            << ", r = FD(Pi): " << verdict(worst.potential, 1e-6)
+            << ", rigid: " << verdict(worst.rigid, 1e-11)
+            << ", homogeneous = displacement: "
+            << verdict(worst.homogeneous, 1e-12) << std::endl;
+  };
+
+  for (const double nu : {0.3, 0.4999})
+    {
+      const auto material = make_isovol<dim>(nu);
+      for (const std::string code : {"BCPBG UnlP0", "BCPPG UnlP0"})
+        {
+          const FormulationCode formulation = parse_formulation_code(code);
+          FamilyElements<dim>   elements(fixture.particles,
+                                       fixture.families,
+                                       formulation,
+                                       ShapeFunctions::parse_base("MTE1"),
+                                       1.);
+          elements.initialize();
+          const bool pbg = (formulation.method == FormulationCode::Method::pbg);
+          Errors     worst;
+          for (const unsigned int k : masters)
+            {
+              QuadratureTable<dim> table, master_table;
+              elements.build(k, table);
+              elements.build_master_table(k, master_table);
+              worst.max(check_element(table,
+                                      pbg ? nullptr : &master_table,
+                                      elements.geometry(k).bonds,
+                                      *material,
+                                      h,
+                                      rng));
+            }
+          std::ostringstream name;
+          name << formulation.text << ", nu = " << nu;
+          report(name.str(), worst);
+        }
+
+      const FE_Q<dim> fe(1);
+      FEValues<dim>   fe_values(fe,
+                              QGauss<dim>(2),
+                              update_gradients | update_JxW_values);
+      Errors          worst;
+      for (const auto &cell : fixture.tria.active_cell_iterators())
+        if (cell->active_cell_index() % 7 == 0)
+          {
+            fe_values.reinit(cell);
+            QuadratureTable<dim> table;
+            fill_q1_table(fe_values, table);
+            std::vector<Tensor<1, dim>> X(cell->n_vertices());
+            for (const unsigned int v : cell->vertex_indices())
+              X[v] = cell->vertex(v) - cell->vertex(0);
+            worst.max(check_element<dim>(table, nullptr, X, *material, h, rng));
+          }
+      std::ostringstream name;
+      name << (dim == 2 ? "Q1P0" : "H1P0") << " cell, nu = " << nu;
+      report(name.str(), worst);
+    }
+}
+
+
+
+int
+main()
+{
+  initlog();
+  test<2>();
+  test<3>();
+}
