@@ -295,20 +295,31 @@ namespace pg
       // with the isochoric/volumetric split.
       const FormulationCode code =
         parse_formulation_code(discretization.formulation);
-      AssertThrow(code.fields != FormulationCode::Fields::condensed_p0 ||
-                    material.model == "isochoric-volumetric neo-Hooke",
-                  ExcBadParameter(
-                    "Material/Model",
-                    material.model,
-                    "the formulation <" + code.text +
-                      "> (subsection 'Discretization') is mixed: it "
-                      "condenses a pressure and a dilatation per element "
-                      "(eqs. 6.2, 6.3), which needs the isochoric/volumetric "
-                      "split of eqs. 2.43-2.44. Set 'Model = "
-                      "isochoric-volumetric neo-Hooke' (with 'Bulk modulus' "
-                      "and 'Shear modulus', or 'Young's modulus' and "
-                      "'Poisson's ratio') or choose a displacement "
-                      "formulation."));
+      if (code.fields == FormulationCode::Fields::condensed_p0)
+        {
+          AssertThrow(material.model == "isochoric-volumetric neo-Hooke" ||
+                        material.model == "linear elastic",
+                      ExcBadParameter(
+                        "Material/Model",
+                        material.model,
+                        "the formulation <" + code.text +
+                          "> (subsection 'Discretization') is mixed: it "
+                          "condenses a pressure and a dilatation per element "
+                          "(eqs. 6.2, 6.3), which needs the split of the "
+                          "energy into isochoric and volumetric parts (eqs. "
+                          "2.43-2.44). Set 'Model = isochoric-volumetric "
+                          "neo-Hooke' (finite strain; with 'Bulk modulus' and "
+                          "'Shear modulus', or 'Young's modulus' and "
+                          "'Poisson's ratio') or 'linear elastic', or choose "
+                          "a displacement formulation."));
+          AssertThrow(dim == 3 || material.plane == "strain",
+                      ExcBadParameter("Material/Plane",
+                                      material.plane,
+                                      "the mixed formulation <" + code.text +
+                                        "> needs plane strain: plane stress "
+                                        "has no volumetric constraint (and "
+                                        "does not lock)."));
+        }
     }
 
 

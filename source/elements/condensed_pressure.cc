@@ -4,27 +4,24 @@ namespace pg
 {
   namespace
   {
-    constexpr const char *condensed_model_name =
-      "isochoric-volumetric neo-Hooke";
-
     /**
      * The material the kernel sees at a point of a condensed-pressure
      * element: the isochoric part (if @p with_isochoric) plus the volumetric
      * stress of the element's fixed pressure p,
-     *   P = P_iso(F) + p J F^{-T},
-     *   A = A_iso(F) + p J (F^{-1}_{BA} F^{-1}_{DC} - F^{-1}_{BC} F^{-1}_{DA}),
-     * the second being p d^2 J / dF dF. The rank-one part through dp/du is
-     * added by the element (it couples the points).
+     *   P = P_iso(F) + p d theta / dF,
+     *   A = A_iso(F) + p d^2 theta / dF dF
+     * (theta = J: p J F^{-T} and p J (F^{-1}_{BA} F^{-1}_{DC} - F^{-1}_{BC}
+     * F^{-1}_{DA})). The rank-one part through dp/du is added by the
+     * element (it couples the points).
      */
     template <int dim>
     class IsochoricPartAtPressure : public Materials::Material<dim>
     {
     public:
-      IsochoricPartAtPressure(
-        const Materials::IsochoricVolumetricNeoHooke<dim> &material,
-        const double                                       pressure,
-        const bool                                         with_isochoric)
-        : material(material)
+      IsochoricPartAtPressure(const Materials::VolumetricSplit<dim> &split,
+                              const double                           pressure,
+                              const bool with_isochoric)
+        : split(split)
         , pressure(pressure)
         , with_isochoric(with_isochoric)
       {}
@@ -35,32 +32,22 @@ namespace pg
                Tensor<4, dim>       &A) const override
       {
         if (with_isochoric)
-          material.evaluate_isochoric(F, P, A);
+          split.evaluate_isochoric(F, P, A);
         else
           {
             P = 0;
             A = 0;
           }
-        const double         pJ    = pressure * checked_jacobian(F);
-        const Tensor<2, dim> F_inv = invert(F);
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            {
-              P[a][b] += pJ * F_inv[b][a];
-              for (unsigned int c = 0; c < dim; ++c)
-                for (unsigned int d = 0; d < dim; ++d)
-                  A[a][b][c][d] += pJ * (F_inv[b][a] * F_inv[d][c] -
-                                         F_inv[b][c] * F_inv[d][a]);
-            }
+        P += pressure * split.volume_measure_derivative(F);
+        split.add_volume_measure_second_derivative(F, pressure, A);
       }
 
       Tensor<2, dim>
       first_piola_stress(const Tensor<2, dim> &F) const override
       {
-        const double   pJ = pressure * checked_jacobian(F);
-        Tensor<2, dim> P  = pJ * transpose(invert(F));
+        Tensor<2, dim> P = pressure * split.volume_measure_derivative(F);
         if (with_isochoric)
-          P += material.isochoric_first_piola_stress(F);
+          P += split.isochoric_first_piola_stress(F);
         return P;
       }
 
@@ -79,40 +66,33 @@ namespace pg
       }
 
     private:
-      static double
-      checked_jacobian(const Tensor<2, dim> &F)
-      {
-        return Materials::checked_jacobian(F, condensed_model_name);
-      }
-
-      const Materials::IsochoricVolumetricNeoHooke<dim> &material;
-      const double                                       pressure;
-      const bool                                         with_isochoric;
+      const Materials::VolumetricSplit<dim> &split;
+      const double                           pressure;
+      const bool                             with_isochoric;
     };
 
 
 
     /**
-     * g_{aA} = sum_q w_q J_q F^{-1}_{q,BA} V^{qa}_B over the points of
+     * g_{aA} = sum_q w_q (d theta/dF)_{q,AB} V^{qa}_B over the points of
      * @p table, with V the test vectors (@p test) or the trial vectors:
-     * W times the derivative of J-bar with respect to u^a_A.
+     * W times the derivative of theta-bar with respect to u^a_A.
      */
     template <int dim>
     void
-    mean_jacobian_derivative(const QuadratureTable<dim>        &table,
-                             const std::vector<Tensor<1, dim>> &y,
-                             const bool                         test,
-                             Vector<double>                    &g)
+    mean_volume_measure_derivative(const QuadratureTable<dim>            &table,
+                                   const std::vector<Tensor<1, dim>>     &y,
+                                   const Materials::VolumetricSplit<dim> &split,
+                                   const bool                             test,
+                                   Vector<double>                        &g)
     {
       const unsigned int n = table.n_nodes;
       g.reinit(n * dim);
       for (unsigned int q = 0; q < table.n_points(); ++q)
         {
-          const Tensor<2, dim> F = deformation_gradient(table, q, y);
-          const Tensor<2, dim> JF_inv_T =
-            (table.weights[q] *
-             Materials::checked_jacobian(F, condensed_model_name)) *
-            transpose(invert(F));
+          const Tensor<2, dim> dtheta =
+            table.weights[q] *
+            split.volume_measure_derivative(deformation_gradient(table, q, y));
           const Tensor<1, dim> *B         = &table.trial[q * n];
           const bool            own_tests = test && !table.test_is_trial;
           const unsigned int    begin = own_tests ? table.test_offsets[q] : 0;
@@ -122,7 +102,7 @@ namespace pg
               const unsigned int    a = own_tests ? table.test_nodes[t] : t;
               const Tensor<1, dim> &V =
                 own_tests ? table.test_vectors[t] : B[t];
-              const Tensor<1, dim> s = JF_inv_T * V;
+              const Tensor<1, dim> s = dtheta * V;
               for (unsigned int c = 0; c < dim; ++c)
                 g[a * dim + c] += s[c];
             }
@@ -134,25 +114,23 @@ namespace pg
 
   template <int dim>
   CondensedPressure
-  condensed_pressure(
-    const QuadratureTable<dim>                        &volumetric_table,
-    const std::vector<Tensor<1, dim>>                 &y,
-    const Materials::IsochoricVolumetricNeoHooke<dim> &material)
+  condensed_pressure(const QuadratureTable<dim>            &volumetric_table,
+                     const std::vector<Tensor<1, dim>>     &y,
+                     const Materials::VolumetricSplit<dim> &split)
   {
-    double volume = 0, volume_change = 0;
+    double volume = 0, volume_change = 0; // W, sum_q w_q theta_q
     for (unsigned int q = 0; q < volumetric_table.n_points(); ++q)
       {
         const double w = volumetric_table.weights[q];
         volume += w;
-        volume_change += w * Materials::checked_jacobian(
-                               deformation_gradient(volumetric_table, q, y),
-                               condensed_model_name);
+        volume_change += w * split.volume_measure(
+                               deformation_gradient(volumetric_table, q, y));
       }
     AssertThrow(volume > 0,
                 ExcMessage("An element of a condensed-pressure formulation "
                            "(UnlP0, Q1P0, H1P0) has no volume."));
     const double Theta = volume_change / volume;
-    return {Theta, material.volumetric_strain_energy_derivative(Theta)};
+    return {Theta, split.volumetric_strain_energy_derivative(Theta)};
   }
 
 
@@ -160,23 +138,23 @@ namespace pg
   template <int dim>
   CondensedPressure
   assemble_condensed_pressure_element(
-    const QuadratureTable<dim>                        &table,
-    const QuadratureTable<dim>                        *volumetric_table,
-    const std::vector<Tensor<1, dim>>                 &y,
-    const Materials::IsochoricVolumetricNeoHooke<dim> &material,
-    Vector<double>                                    &residual,
-    FullMatrix<double>                                *tangent)
+    const QuadratureTable<dim>            &table,
+    const QuadratureTable<dim>            *volumetric_table,
+    const std::vector<Tensor<1, dim>>     &y,
+    const Materials::VolumetricSplit<dim> &split,
+    Vector<double>                        &residual,
+    FullMatrix<double>                    *tangent)
   {
     const QuadratureTable<dim> &vol_table =
       (volumetric_table != nullptr ? *volumetric_table : table);
-    const CondensedPressure fields = condensed_pressure(vol_table, y, material);
+    const CondensedPressure fields = condensed_pressure(vol_table, y, split);
 
     // The isochoric part and p d^2 J at every point; for separate
     // volumetric points (PPG) two kernel calls.
     if (volumetric_table == nullptr)
       assemble_element(table,
                        y,
-                       IsochoricPartAtPressure<dim>(material,
+                       IsochoricPartAtPressure<dim>(split,
                                                     fields.pressure,
                                                     true),
                        residual,
@@ -185,14 +163,14 @@ namespace pg
       {
         assemble_element(table,
                          y,
-                         IsochoricPartAtPressure<dim>(material, 0., true),
+                         IsochoricPartAtPressure<dim>(split, 0., true),
                          residual,
                          tangent);
         Vector<double>     volumetric_residual;
         FullMatrix<double> volumetric_tangent;
         assemble_element(*volumetric_table,
                          y,
-                         IsochoricPartAtPressure<dim>(material,
+                         IsochoricPartAtPressure<dim>(split,
                                                       fields.pressure,
                                                       false),
                          volumetric_residual,
@@ -210,11 +188,10 @@ namespace pg
         for (const double w : vol_table.weights)
           volume += w;
         Vector<double> g_test, g_trial;
-        mean_jacobian_derivative(vol_table, y, true, g_test);
-        mean_jacobian_derivative(vol_table, y, false, g_trial);
+        mean_volume_measure_derivative(vol_table, y, split, true, g_test);
+        mean_volume_measure_derivative(vol_table, y, split, false, g_trial);
         const double factor =
-          material.volumetric_strain_energy_second_derivative(
-            fields.dilatation) /
+          split.volumetric_strain_energy_second_derivative(fields.dilatation) /
           volume;
         for (unsigned int i = 0; i < g_test.size(); ++i)
           if (g_test[i] != 0.)
@@ -229,25 +206,23 @@ namespace pg
   template CondensedPressure
   condensed_pressure(const QuadratureTable<2> &,
                      const std::vector<Tensor<1, 2>> &,
-                     const Materials::IsochoricVolumetricNeoHooke<2> &);
+                     const Materials::VolumetricSplit<2> &);
   template CondensedPressure
   condensed_pressure(const QuadratureTable<3> &,
                      const std::vector<Tensor<1, 3>> &,
-                     const Materials::IsochoricVolumetricNeoHooke<3> &);
+                     const Materials::VolumetricSplit<3> &);
   template CondensedPressure
-  assemble_condensed_pressure_element(
-    const QuadratureTable<2> &,
-    const QuadratureTable<2> *,
-    const std::vector<Tensor<1, 2>> &,
-    const Materials::IsochoricVolumetricNeoHooke<2> &,
-    Vector<double> &,
-    FullMatrix<double> *);
+  assemble_condensed_pressure_element(const QuadratureTable<2> &,
+                                      const QuadratureTable<2> *,
+                                      const std::vector<Tensor<1, 2>> &,
+                                      const Materials::VolumetricSplit<2> &,
+                                      Vector<double> &,
+                                      FullMatrix<double> *);
   template CondensedPressure
-  assemble_condensed_pressure_element(
-    const QuadratureTable<3> &,
-    const QuadratureTable<3> *,
-    const std::vector<Tensor<1, 3>> &,
-    const Materials::IsochoricVolumetricNeoHooke<3> &,
-    Vector<double> &,
-    FullMatrix<double> *);
+  assemble_condensed_pressure_element(const QuadratureTable<3> &,
+                                      const QuadratureTable<3> *,
+                                      const std::vector<Tensor<1, 3>> &,
+                                      const Materials::VolumetricSplit<3> &,
+                                      Vector<double> &,
+                                      FullMatrix<double> *);
 } // namespace pg

@@ -115,13 +115,13 @@ namespace pg
 
   template <int dim>
   FamilyGroup<dim>::FamilyGroup(
-    const std::vector<unsigned int>                   &owned_families,
-    const FamilySet<dim>                              &families,
-    const ParticleSet<dim>                            &particles,
-    const std::vector<QuadratureTable<dim>>           &family_tables,
-    const Materials::Material<dim>                    &material,
-    const Materials::IsochoricVolumetricNeoHooke<dim> *condensed_pressure,
-    const FamilyElements<dim>                         *family_elements)
+    const std::vector<unsigned int>         &owned_families,
+    const FamilySet<dim>                    &families,
+    const ParticleSet<dim>                  &particles,
+    const std::vector<QuadratureTable<dim>> &family_tables,
+    const Materials::Material<dim>          &material,
+    const Materials::VolumetricSplit<dim>   *condensed_pressure,
+    const FamilyElements<dim>               *family_elements)
     : FamilyGroupBase<dim>(owned_families, families, particles)
     , family_tables(family_tables)
     , material(material)

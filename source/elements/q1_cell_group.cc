@@ -42,10 +42,10 @@ namespace pg
 
   template <int dim>
   Q1CellGroup<dim>::Q1CellGroup(
-    const std::vector<CellIterator>                   &cells,
-    const Materials::Material<dim>                    &material,
-    const Loads<dim>                                  &loads,
-    const Materials::IsochoricVolumetricNeoHooke<dim> *condensed_pressure)
+    const std::vector<CellIterator>       &cells,
+    const Materials::Material<dim>        &material,
+    const Loads<dim>                      &loads,
+    const Materials::VolumetricSplit<dim> *condensed_pressure)
     : cells(cells)
     , material(material)
     , loads(loads)

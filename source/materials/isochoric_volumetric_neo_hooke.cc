@@ -215,6 +215,45 @@ namespace pg
 
     template <int dim>
     double
+    IsochoricVolumetricNeoHooke<dim>::volume_measure(
+      const Tensor<2, dim> &F) const
+    {
+      return checked_jacobian(F, IsoVol::model_name);
+    }
+
+
+
+    template <int dim>
+    Tensor<2, dim>
+    IsochoricVolumetricNeoHooke<dim>::volume_measure_derivative(
+      const Tensor<2, dim> &F) const
+    {
+      return checked_jacobian(F, IsoVol::model_name) * transpose(invert(F));
+    }
+
+
+
+    template <int dim>
+    void
+    IsochoricVolumetricNeoHooke<dim>::add_volume_measure_second_derivative(
+      const Tensor<2, dim> &F,
+      const double          factor,
+      Tensor<4, dim>       &A) const
+    {
+      const double fJ = factor * checked_jacobian(F, IsoVol::model_name);
+      const Tensor<2, dim> F_inv = invert(F);
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = 0; b < dim; ++b)
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int d = 0; d < dim; ++d)
+              A[a][b][c][d] +=
+                fJ * (F_inv[b][a] * F_inv[d][c] - F_inv[b][c] * F_inv[d][a]);
+    }
+
+
+
+    template <int dim>
+    double
     IsochoricVolumetricNeoHooke<dim>::isochoric_strain_energy_density(
       const Tensor<2, dim> &F) const
     {

@@ -104,13 +104,11 @@ namespace pg
     // The element groups: Q1 cells first, then the families (PG or CPD).
     // The mixed codes (UnlP0, FEM Q1P0) condense p and Theta per element
     // with the isochoric/volumetric split of the material.
-    const Materials::IsochoricVolumetricNeoHooke<dim> *condensed_pressure =
-      nullptr;
+    const Materials::VolumetricSplit<dim> *condensed_pressure = nullptr;
     if (formulation.fields == FormulationCode::Fields::condensed_p0)
       {
         condensed_pressure =
-          dynamic_cast<const Materials::IsochoricVolumetricNeoHooke<dim> *>(
-            &material);
+          dynamic_cast<const Materials::VolumetricSplit<dim> *>(&material);
         // AllParameters::parse_parameters() checked the model
         AssertThrow(condensed_pressure != nullptr, ExcInternalError());
       }

@@ -3,7 +3,7 @@
 
 #include <pg/base/global.h>
 #include <pg/elements/quadrature_table.h>
-#include <pg/materials/isochoric_volumetric_neo_hooke.h>
+#include <pg/materials/volumetric_split.h>
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
@@ -21,7 +21,10 @@ namespace pg
    */
   struct CondensedPressure
   {
-    /** Theta = J-bar, the weighted mean of J over the volumetric points. */
+    /**
+     * Theta = theta-bar, the weighted mean of the volume measure theta
+     * (J, or tr(eps) for linear elasticity) over the volumetric points.
+     */
     double dilatation;
     /** p = W_vol'(Theta) (force per area). */
     double pressure;
@@ -31,29 +34,32 @@ namespace pg
    * The condensed fields at the local positions @p y: the volumetric
    * points are those of @p volumetric_table (pg-methods.md section 12.2.1:
    * every point of a PBG family or a Q1 cell, the master of a PPG family).
-   * Throws if J <= 0 at a volumetric point.
+   * Throws if J <= 0 at a volumetric point (finite strain).
    */
   template <int dim>
   CondensedPressure
-  condensed_pressure(
-    const QuadratureTable<dim>                        &volumetric_table,
-    const std::vector<Tensor<1, dim>>                 &y,
-    const Materials::IsochoricVolumetricNeoHooke<dim> &material);
+  condensed_pressure(const QuadratureTable<dim>            &volumetric_table,
+                     const std::vector<Tensor<1, dim>>     &y,
+                     const Materials::VolumetricSplit<dim> &material);
 
   /**
    * The element residual and tangent of the three-field (u, p, Theta)
    * Hu-Washizu potential (eqs. 6.2, 6.3) with p and Theta constant per
    * element and condensed in closed form (pg-methods.md section 12.2.1):
-   * with W = sum_q w_q over the volumetric points,
-   * @f[ \Theta = \bar J = \frac1W \sum_q w_q J_q, \qquad
+   * with W = sum_q w_q over the volumetric points and the volume measure
+   * theta(F) of the material's split (J = det F; tr(eps) for linear
+   * elasticity, where this is the B-bar method),
+   * @f[ \Theta = \bar\theta = \frac1W \sum_q w_q \theta_q, \qquad
    *     p = W_{vol}'(\Theta), @f]
    * @f[ r_{aA} = \sum_{q} w_q P^{iso}_{AB}(F_q) T^{qa}_B
    *     + p\, g_{aA}, \qquad
-   *     g_{aA} = \sum_{q\,\in\,vol} w_q J_q F^{-1}_{q,BA} T^{qa}_B, @f]
+   *     g_{aA} = \sum_{q\,\in\,vol} w_q
+   *       \frac{\partial\theta_q}{\partial F_{AB}} T^{qa}_B, @f]
    * @f[ k_{aA,bC} = (\text{isochoric tangent})
    *     + \frac{W_{vol}''(\Theta)}{W} g_{aA} \bar g_{bC}
    *     + p \sum_{q\,\in\,vol} w_q T^{qa}_B
-   *       \frac{\partial^2 J}{\partial F_{AB} \partial F_{CD}} B^{qb}_D, @f]
+   *       \frac{\partial^2 \theta}{\partial F_{AB} \partial F_{CD}}
+   *       B^{qb}_D, @f]
    * with test vectors T in g and trial vectors B in g-bar. This equals
    * the static condensation (6.6) at local equilibrium, and the
    * mean-dilatation form of step-44's condensed Q1P0.
@@ -68,12 +74,12 @@ namespace pg
   template <int dim>
   CondensedPressure
   assemble_condensed_pressure_element(
-    const QuadratureTable<dim>                        &table,
-    const QuadratureTable<dim>                        *volumetric_table,
-    const std::vector<Tensor<1, dim>>                 &y,
-    const Materials::IsochoricVolumetricNeoHooke<dim> &material,
-    Vector<double>                                    &residual,
-    FullMatrix<double>                                *tangent);
+    const QuadratureTable<dim>            &table,
+    const QuadratureTable<dim>            *volumetric_table,
+    const std::vector<Tensor<1, dim>>     &y,
+    const Materials::VolumetricSplit<dim> &material,
+    Vector<double>                        &residual,
+    FullMatrix<double>                    *tangent);
 } // namespace pg
 
 #endif

@@ -6,8 +6,8 @@
 #include <pg/elements/family_elements.h>
 #include <pg/elements/quadrature_table.h>
 #include <pg/families/family_set.h>
-#include <pg/materials/isochoric_volumetric_neo_hooke.h>
 #include <pg/materials/material.h>
+#include <pg/materials/volumetric_split.h>
 #include <pg/mesh/particle_set.h>
 
 #include <vector>
@@ -71,14 +71,14 @@ namespace pg
   class FamilyGroup : public FamilyGroupBase<dim>
   {
   public:
-    FamilyGroup(const std::vector<unsigned int>         &owned_families,
-                const FamilySet<dim>                    &families,
-                const ParticleSet<dim>                  &particles,
-                const std::vector<QuadratureTable<dim>> &family_tables,
-                const Materials::Material<dim>          &material,
-                const Materials::IsochoricVolumetricNeoHooke<dim>
-                                          *condensed_pressure = nullptr,
-                const FamilyElements<dim> *family_elements    = nullptr);
+    FamilyGroup(
+      const std::vector<unsigned int>         &owned_families,
+      const FamilySet<dim>                    &families,
+      const ParticleSet<dim>                  &particles,
+      const std::vector<QuadratureTable<dim>> &family_tables,
+      const Materials::Material<dim>          &material,
+      const Materials::VolumetricSplit<dim>   *condensed_pressure = nullptr,
+      const FamilyElements<dim>               *family_elements    = nullptr);
 
     std::string
     name() const override;
@@ -97,9 +97,9 @@ namespace pg
              LocalSystem                 &local) const override;
 
   private:
-    const std::vector<QuadratureTable<dim>>           &family_tables;
-    const Materials::Material<dim>                    &material;
-    const Materials::IsochoricVolumetricNeoHooke<dim> *condensed_pressure;
+    const std::vector<QuadratureTable<dim>> &family_tables;
+    const Materials::Material<dim>          &material;
+    const Materials::VolumetricSplit<dim>   *condensed_pressure;
     /** For the master tables of PPG UnlP0; nullptr otherwise. */
     const FamilyElements<dim> *family_elements;
   };

@@ -3,8 +3,8 @@
 
 #include <pg/assembly/loads.h>
 #include <pg/elements/element_group.h>
-#include <pg/materials/isochoric_volumetric_neo_hooke.h>
 #include <pg/materials/material.h>
+#include <pg/materials/volumetric_split.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -29,11 +29,11 @@ namespace pg
      * H1P0 (3-D): p and Theta constant per cell and condensed
      * (assemble_condensed_pressure_element(), deal.II's step-44).
      */
-    Q1CellGroup(const std::vector<CellIterator> &cells,
-                const Materials::Material<dim>  &material,
-                const Loads<dim>                &loads,
-                const Materials::IsochoricVolumetricNeoHooke<dim>
-                  *condensed_pressure = nullptr);
+    Q1CellGroup(
+      const std::vector<CellIterator>       &cells,
+      const Materials::Material<dim>        &material,
+      const Loads<dim>                      &loads,
+      const Materials::VolumetricSplit<dim> *condensed_pressure = nullptr);
 
     std::string
     name() const override;
@@ -68,11 +68,11 @@ namespace pg
     non_finite_hint() const override;
 
   private:
-    const std::vector<CellIterator>                   &cells;
-    const Materials::Material<dim>                    &material;
-    const Loads<dim>                                  &loads;
-    const Materials::IsochoricVolumetricNeoHooke<dim> *condensed_pressure;
-    const FE_Q<dim>                                    fe_scalar;
+    const std::vector<CellIterator>       &cells;
+    const Materials::Material<dim>        &material;
+    const Loads<dim>                      &loads;
+    const Materials::VolumetricSplit<dim> *condensed_pressure;
+    const FE_Q<dim>                        fe_scalar;
   };
 } // namespace pg
 

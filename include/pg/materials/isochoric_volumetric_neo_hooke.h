@@ -2,6 +2,7 @@
 #define pg_materials_isochoric_volumetric_neo_hooke_h
 
 #include <pg/materials/material.h>
+#include <pg/materials/volumetric_split.h>
 
 namespace pg
 {
@@ -49,7 +50,8 @@ namespace pg
      * Theta if Theta <= 0.
      */
     template <int dim>
-    class IsochoricVolumetricNeoHooke : public Material<dim>
+    class IsochoricVolumetricNeoHooke : public Material<dim>,
+                                        public VolumetricSplit<dim>
     {
     public:
       /**
@@ -83,17 +85,17 @@ namespace pg
 
       /** W_iso = mu/2 (J^{-2/3} I_1 - 3), energy per reference volume. */
       double
-      isochoric_strain_energy_density(const Tensor<2, dim> &F) const;
+      isochoric_strain_energy_density(const Tensor<2, dim> &F) const final;
 
       /** P_iso = dW_iso/dF = mu J^{-2/3} (F - I_1/3 F^{-T}). */
       Tensor<2, dim>
-      isochoric_first_piola_stress(const Tensor<2, dim> &F) const;
+      isochoric_first_piola_stress(const Tensor<2, dim> &F) const final;
 
       /** P_iso and the tangent A_iso = dP_iso/dF (see the class doc). */
       void
       evaluate_isochoric(const Tensor<2, dim> &F,
                          Tensor<2, dim>       &P_iso,
-                         Tensor<4, dim>       &A_iso) const;
+                         Tensor<4, dim>       &A_iso) const final;
 
       /**
        * W_vol(Theta) = K/4 (Theta^2 - 1 - 2 ln Theta) of the volume ratio
@@ -101,18 +103,36 @@ namespace pg
        * reference volume.
        */
       double
-      volumetric_strain_energy_density(const double Theta) const;
+      volumetric_strain_energy_density(const double Theta) const final;
 
       /**
        * W_vol'(Theta) = K/2 (Theta - 1/Theta), the pressure p of eq. (2.60);
        * P_vol = J W_vol'(J) F^{-T}. Units: force per area.
        */
       double
-      volumetric_strain_energy_derivative(const double Theta) const;
+      volumetric_strain_energy_derivative(const double Theta) const final;
 
       /** W_vol''(Theta) = K/2 (1 + 1/Theta^2). Units: force per area. */
       double
-      volumetric_strain_energy_second_derivative(const double Theta) const;
+      volumetric_strain_energy_second_derivative(
+        const double Theta) const final;
+
+      /** theta = J = det F. */
+      double
+      volume_measure(const Tensor<2, dim> &F) const final;
+
+      /** d J / dF = J F^{-T}. */
+      Tensor<2, dim>
+      volume_measure_derivative(const Tensor<2, dim> &F) const final;
+
+      /**
+       * A_ABCD += factor J (F^{-1}_{BA} F^{-1}_{DC} - F^{-1}_{BC}
+       * F^{-1}_{DA}).
+       */
+      void
+      add_volume_measure_second_derivative(const Tensor<2, dim> &F,
+                                           const double          factor,
+                                           Tensor<4, dim>       &A) const final;
 
       /** The bulk modulus K = lambda + 2/3 mu. */
       double

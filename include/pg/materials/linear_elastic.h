@@ -2,6 +2,7 @@
 #define pg_materials_linear_elastic_h
 
 #include <pg/materials/material.h>
+#include <pg/materials/volumetric_split.h>
 
 namespace pg
 {
@@ -29,9 +30,14 @@ namespace pg
      *
      * The model is not frame invariant: it is meant for small displacements
      * and rotations only.
+     *
+     * For the mixed formulations (plane strain and 3-D) it splits into the
+     * deviatoric energy W_iso = mu (eps : eps - tr(eps)^2 / 3) (the 3-D
+     * deviator, eps_33 = 0 in plane strain) and W_vol = K/2 theta^2 of the
+     * volume measure theta = tr(eps), K = lambda + 2/3 mu.
      */
     template <int dim>
-    class LinearElastic : public Material<dim>
+    class LinearElastic : public Material<dim>, public VolumetricSplit<dim>
     {
     public:
       /**
@@ -58,7 +64,56 @@ namespace pg
       double
       strain_energy_density(const Tensor<2, dim> &F) const final;
 
+      /**
+       * @name The split for the mixed formulations (plane strain, 3-D;
+       * each function throws in plane stress)
+       */
+      /** @{ */
+      double
+      isochoric_strain_energy_density(const Tensor<2, dim> &F) const final;
+
+      /** P_iso = 2 mu (eps - tr(eps)/3 1). */
+      Tensor<2, dim>
+      isochoric_first_piola_stress(const Tensor<2, dim> &F) const final;
+
+      void
+      evaluate_isochoric(const Tensor<2, dim> &F,
+                         Tensor<2, dim>       &P_iso,
+                         Tensor<4, dim>       &A_iso) const final;
+
+      /** theta = tr(eps) = tr(F) - dim. */
+      double
+      volume_measure(const Tensor<2, dim> &F) const final;
+
+      /** d theta / dF = 1. */
+      Tensor<2, dim>
+      volume_measure_derivative(const Tensor<2, dim> &F) const final;
+
+      /** theta is linear in F: nothing to add. */
+      void
+      add_volume_measure_second_derivative(const Tensor<2, dim> &F,
+                                           const double          factor,
+                                           Tensor<4, dim>       &A) const final;
+
+      /** K/2 Theta^2. */
+      double
+      volumetric_strain_energy_density(const double Theta) const final;
+
+      /** K Theta. */
+      double
+      volumetric_strain_energy_derivative(const double Theta) const final;
+
+      /** K. */
+      double
+      volumetric_strain_energy_second_derivative(
+        const double Theta) const final;
+      /** @} */
+
     private:
+      /** Throws in plane stress, where the split is not defined. */
+      void
+      check_split() const;
+
       /** Lame's first parameter (lambda* in plane stress). */
       const double lambda;
       /** Shear modulus. */
