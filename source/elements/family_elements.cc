@@ -260,17 +260,30 @@ namespace pg
   FamilyElements<dim>::build_master_table(const unsigned int    k,
                                           QuadratureTable<dim> &table) const
   {
-    const bool bubnov_galerkin =
-      (formulation.method == FormulationCode::Method::pbg);
-    const auto &trial = master_gradients(k);
-    table.reinit(trial.size(), bubnov_galerkin);
-    table.add_point(particles.volume(k), trial, particles.position(k));
-    if (!bubnov_galerkin)
+    // Test = trial = the (VC-corrected) test gradients: see the
+    // declaration.
+    const auto &gradients = master_test_gradients(k);
+    const bool  substituted_v1 =
+      (family_correction_function(k) != formulation.correction_function);
+    table.reinit(gradients.size(), !substituted_v1);
+    if (!substituted_v1)
       {
-        const auto &test = master_test_gradients(k);
-        for (unsigned int a = 0; a < test.size(); ++a)
-          table.add_test_vector(a, test[a]);
+        table.add_point(particles.volume(k), gradients, particles.position(k));
+        return;
       }
+    // pg's V1 at an interface master: the trial gradients M^{-T} G with
+    // M = sum_b dX^b (x) G^b, so that F^{kk} of a linear field stays exact.
+    const auto     bonds = geometry(k).bonds;
+    Tensor<2, dim> M;
+    for (unsigned int b = 0; b < gradients.size(); ++b)
+      M += outer_product(bonds[b], gradients[b]);
+    const Tensor<2, dim>        M_inv_T = transpose(invert(M));
+    std::vector<Tensor<1, dim>> trial(gradients.size());
+    for (unsigned int b = 0; b < gradients.size(); ++b)
+      trial[b] = M_inv_T * gradients[b];
+    table.add_point(particles.volume(k), trial, particles.position(k));
+    for (unsigned int a = 0; a < gradients.size(); ++a)
+      table.add_test_vector(a, gradients[a]);
   }
 
 

@@ -12,6 +12,13 @@
 // VCBCPPG V3sn Unl 3/0. (The dissertation's "Unl" includes the bond
 // correction; pg's codes say BC explicitly.)
 //
+// The mixed formulations (issue 13; the B-bar split of linear elasticity)
+// have exactly the 3 rigid modes and no negative eigenvalue; their first
+// non-rigid (bending) eigenvalue is below Q1's, since they remove the
+// volumetric part of Q1's stiffness. The same at nu = 0.4999 (marked
+// "@ 0.4999"). (PPG UnlP0 with the uncorrected gradients as trial
+// functions at the master had negative eigenvalues from nu = 0.45 on.)
+//
 // A finding printed as well: VC-corrected PPG *without* BC has negative
 // eigenvalues (an unstable tangent), which is why it can converge to
 // spurious equilibria under finite strain (homogeneous_deformation_01).
@@ -35,12 +42,25 @@ main(int argc, char **argv)
                                  "VCPBG V3sn U1",
                                  "VCBCPBG V5sn Unl",
                                  "VCBCPPG V3sn Unl",
-                                 "VCPPG V3sn Unl noBC"})
+                                 "VCPPG V3sn Unl noBC",
+                                 "FEM Q1P0",
+                                 "VCBCPBG V5sn UnlP0",
+                                 "VCBCPPG V3sn UnlP0",
+                                 "FEM Q1P0 @ 0.4999",
+                                 "VCBCPBG V5sn UnlP0 @ 0.4999",
+                                 "VCBCPPG V3sn UnlP0 @ 0.4999"})
     {
+      // "<code> @ <nu>": the same block at another Poisson's ratio
+      const auto        at = code.find(" @ ");
+      const std::string nu =
+        (at == std::string::npos ?
+           "" :
+           "subsection Material\n  set Poisson's ratio = " +
+             code.substr(at + 3) + "\nend\n");
       const pg::RunSummary s =
         run_problem<2>(base +
                          "subsection Discretization\n  set Formulation = " +
-                         code + "\nend\n",
+                         code.substr(0, at) + "\nend\n" + nu,
                        screen);
       const auto &ev = s.eigenvalues;
       const auto  z  = s.n_zero_eigenvalues;

@@ -53,7 +53,15 @@ main(int argc, char **argv)
         "subsection Discretization\n  set Formulation = XPBG Unl\nend\n");
   check("formulation not yet available",
         "subsection Discretization\n"
-        "  set Formulation = VCPPG V3sn UnlP0\nend\n");
+        "  set Formulation = VCPBG V5sn Unl+P1C\nend\n");
+  check("mixed formulation on a material without the volumetric split",
+        "subsection Discretization\n"
+        "  set Formulation = VCPPG V3sn UnlP0\nend\n"
+        "subsection Material\n  set Model = saint venant kirchhoff\nend\n");
+  check("mixed formulation in plane stress",
+        "subsection Discretization\n"
+        "  set Formulation = FEM Q1P0\nend\n"
+        "subsection Material\n  set Plane = stress\nend\n");
   check("correction function without VC",
         "subsection Discretization\n  set Formulation = PPG V3sn Unl\nend\n");
   check("contradictory formulation",

@@ -10,8 +10,11 @@
 //
 // The mixed UnlP0 (Q1P0 cells in the coupled regions, linear elasticity
 // split into its deviatoric and volumetric parts: the B-bar form) passes
-// too, VCPPG V1sn UnlP0 included, for which Table 7.2 gives 6.04e-3
-// (doc/ambiguities.md has why pg's is exact).
+// with VCPPG V3sn and VCPBG V5sn, as Table 7.2 says; VCPPG V1sn UnlP0 does
+// not (Table 7.2: 6.04e-3 absolute on 1345 irregular particles): the
+// volumetric point at the master takes F^{kk} from the VC-corrected
+// gradients, which V1 changes for a linear field and V3 does not
+// (FamilyElements::build_master_table(), doc/ambiguities.md).
 //
 // Printed as numbers (3 digits) instead:
 // - the uncorrected methods (Table 7.2 gives about 1e-1 for PPG Unl);
@@ -53,7 +56,6 @@ main(int argc, char **argv)
                                      "VCPBG V5p Unl noBC",
                                      "VCPBG V3sn U1",
                                      "VCBCPPG V3sn UnlP0",
-                                     "VCBCPPG V1sn UnlP0",
                                      "VCBCPBG V5sn UnlP0"})
         {
           const pg::RunSummary s =
@@ -78,7 +80,8 @@ main(int argc, char **argv)
                                  "VCPPG V3s Unl noBC",
                                  "VCBCPBG V5s Unl",
                                  "BCPPG UnlP0",
-                                 "BCPBG UnlP0"})
+                                 "BCPBG UnlP0",
+                                 "VCBCPPG V1sn UnlP0"})
     {
       const pg::RunSummary s = run_problem<2>(patch_test(code, "all"), screen);
       std::ostringstream   line;

@@ -85,10 +85,20 @@ namespace pg
     master_test_gradients(const unsigned int k) const;
 
     /**
-     * The one-point table of family @p k at its master: weight V^k, the
-     * master gradients as trial and test vectors (for PPG the test ones
-     * apart). The volumetric point of PPG UnlP0 (pg-methods.md section
-     * 12.2).
+     * The one-point table of family @p k at its master: weight V^k, trial
+     * and test vectors the master's test gradients G^{kka} (VC-corrected
+     * after set_correction_factors()). The volumetric point of PPG UnlP0
+     * (eq. 6.7, pg-methods.md section 12.2): F^{kk} from the corrected
+     * gradients too, which Table 7.2 implies (V1 is not exact there, V2
+     * and V3 are: with V3 and V2 the correction does not change F^{kk} of
+     * a linear field, with V1 it does) and which keeps the volumetric
+     * stiffness symmetric and positive (with the uncorrected trial
+     * gradients the free block at nu = 0.45 has negative eigenvalues,
+     * doc/ambiguities.md). Where pg uses V1 instead of the code's function
+     * (PPG interface masters, family_correction_function()) the trial
+     * vectors are M^{-T} G^{kkb}, M = sum_b dX^{kb} (x) G^{kkb}, which
+     * keeps F^{kk} of a linear field exact, so that coupled models pass the
+     * patch test.
      */
     void
     build_master_table(const unsigned int k, QuadratureTable<dim> &table) const;
