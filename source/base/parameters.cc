@@ -34,6 +34,39 @@ namespace pg
       {
         const std::string entry      = path + "/Function expression";
         const std::string expression = prm.get("Function expression");
+        // deal.II reads each constant with string_to_double(), which stops
+        // at the first character that is not part of a number: 'a=10*pi/180'
+        // would silently be a = 10.
+        const std::string constants = prm.get("Function constants");
+        for (const std::string &item :
+             Utilities::split_string_list(constants, ','))
+          {
+            const auto        equals = item.find('=');
+            const std::string value  = Utilities::trim(
+              equals == std::string::npos ? std::string() :
+                                            item.substr(equals + 1));
+            bool is_number = !value.empty();
+            try
+              {
+                std::size_t end = 0;
+                std::stod(value, &end);
+                is_number = is_number && (end == value.size());
+              }
+            catch (...)
+              {
+                is_number = false;
+              }
+            AssertThrow(is_number,
+                        ExcBadParameter(path + "/Function constants",
+                                        constants,
+                                        "the item <" + Utilities::trim(item) +
+                                          "> is not 'name=number' (deal.II "
+                                          "would read '10*pi/180' as 10). "
+                                          "Give each constant as a plain "
+                                          "number, e.g. 'a=0.174533', or "
+                                          "write the formula into 'Function "
+                                          "expression'."));
+          }
         const std::string how =
           " Write one expression in x, y" + std::string(dim == 3 ? ", z" : "") +
           " and t per component, separated by ';' (constants in 'Function "

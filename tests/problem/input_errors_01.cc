@@ -58,6 +58,11 @@ main(int argc, char **argv)
         "subsection Discretization\n"
         "  set Formulation = VCPPG V3sn UnlP0\nend\n"
         "subsection Material\n  set Model = saint venant kirchhoff\nend\n");
+  check("function constant that is a formula, not a number",
+        "subsection Boundary conditions\n  set Dirichlet = 0: xy\n"
+        "  subsection Prescribed displacement\n"
+        "    set Function constants  = a=10*pi/180\n"
+        "    set Function expression = a*x; 0\n  end\nend\n");
   check("mixed formulation in plane stress",
         "subsection Discretization\n"
         "  set Formulation = FEM Q1P0\nend\n"

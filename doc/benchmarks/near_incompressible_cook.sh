@@ -1,0 +1,116 @@
+#!/bin/sh
+# Volumetric locking on Cook's membrane (2-D plane strain, the
+# isochoric-volumetric neo-Hooke with E = 108.57 and nu = 0.4999, K/mu =
+# 5000; the tip load of prm/cook_membrane_2d.prm in 5 load steps): the
+# vertical tip displacement against the number of DoFs for the displacement
+# formulations (FEM Q1, VCBCPBG V5sn Unl, VCBCPPG V3sn Unl), their mixed
+# counterparts (FEM Q1P0, VCBCPBG V5sn UnlP0, VCBCPPG V3sn UnlP0) and a
+# coupled mixed model (UnlP0 particles on the right half, Q1P0 cells on the
+# left), with the time per Newton step. The reference is FEM Q1P0 on a
+# 256 x 256 mesh. Writes doc/benchmarks/near_incompressible_cook/results.txt
+# and doc/figures/near_incompressible_cook.png.
+# Usage (from the repository root, with a Release build):
+#   sh doc/benchmarks/near_incompressible_cook.sh build-release/applications/pg_solve/pg_solve
+set -e
+PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
+OUT=doc/benchmarks/near_incompressible_cook
+WORK=$(mktemp -d)
+mkdir -p "$OUT" doc/figures
+RESULTS="$OUT/results.txt"
+echo "# label | formulation | N | DoFs | tip u_y | Newton steps | seconds per Newton step (assembly + solve) | total seconds" > "$RESULTS"
+
+run() { # label formulation N [meshfree region]
+  name=$(echo "$1_$3" | tr ' ' '_')
+  region=${4:-all}
+  [ "$2" = FEM ] || [ "$2" = "FEM Q1P0" ] && region=none
+  cat > "$WORK/$name.prm" <<END
+set Dimension = 2
+subsection Geometry
+  set Mesh              = cook membrane
+  set Subdivisions      = $3
+  set Global refinement = 0
+  set Meshfree region   = $region
+end
+subsection Discretization
+  set Formulation    = $2
+  set Horizon factor = 2.51
+end
+subsection Material
+  set Model           = isochoric-volumetric neo-Hooke
+  set Young's modulus = 108.571428571428571
+  set Poisson's ratio = 0.4999
+end
+subsection Boundary conditions
+  set Dirichlet = 0: xy
+  set Neumann   = 1
+  subsection Traction
+    set Function expression = 0; t
+  end
+end
+subsection Loading
+  set Load steps = 5
+end
+subsection Linear solver
+  set Type = direct
+end
+subsection Output
+  set Directory = $WORK/$name
+  set VTU       = false
+  set Points    = tip: 48, 60
+end
+END
+  if "$PG_SOLVE" "$WORK/$name.prm" > "$WORK/$name.log" 2>&1; then
+    /usr/bin/env python3 - "$WORK/$name/summary.json" "$1" "$2" "$3" >> "$RESULTS" <<'END'
+import json, sys
+s = json.load(open(sys.argv[1]))
+t = s["timing"]
+n = max(s["newton_iterations"], 1)
+print("%s | %s | %s | %d | %.6f | %d | %.4f | %.2f" % (
+    sys.argv[2], sys.argv[3], sys.argv[4], s["n_dofs"],
+    s["points"]["tip"][1], n, (t["assembly"] + t["solve"]) / n, t["total"]))
+END
+  else
+    echo "$1 | $2 | $3 | - | failed: $(tail -n 3 "$WORK/$name.log" | tr '\n' ' ')" >> "$RESULTS"
+  fi
+  tail -n 1 "$RESULTS"
+}
+
+run reference "FEM Q1P0" 256
+for N in 4 8 16 32 64; do
+  run "FEM Q1" FEM $N
+  run "FEM Q1P0" "FEM Q1P0" $N
+  run "VCBCPBG V5sn Unl" "VCBCPBG V5sn Unl" $N
+  run "VCBCPBG V5sn UnlP0" "VCBCPBG V5sn UnlP0" $N
+  run "VCBCPPG V3sn Unl" "VCBCPPG V3sn Unl" $N
+  run "VCBCPPG V3sn UnlP0" "VCBCPPG V3sn UnlP0" $N
+  run "coupled UnlP0/Q1P0" "VCBCPPG V3sn UnlP0" $N "box 24, -1 : 49, 61"
+done
+rm -rf "$WORK"
+
+/usr/bin/env python3 - "$RESULTS" <<'END'
+import sys
+rows = [l.split(" | ") for l in open(sys.argv[1]) if not l.startswith("#")]
+rows = [r for r in rows if len(r) == 8]
+ref = float([r for r in rows if r[0] == "reference"][0][4])
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+except ImportError:
+    sys.exit(0)
+fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+for label in dict.fromkeys(r[0] for r in rows if r[0] != "reference"):
+    data = [r for r in rows if r[0] == label]
+    dofs = [int(r[3]) for r in data]
+    dashed = "Unl" in label and "P0" not in label or label == "FEM Q1"
+    style = "--" if dashed else "-"
+    ax[0].semilogx(dofs, [float(r[4]) for r in data], style, marker="o", label=label)
+    ax[1].loglog(dofs, [abs(float(r[4]) - ref) / ref for r in data], style, marker="o", label=label)
+ax[0].axhline(ref, color="k", lw=0.8)
+ax[0].set_xlabel("DoFs"); ax[0].set_ylabel("tip u_y")
+ax[1].set_xlabel("DoFs"); ax[1].set_ylabel("|u_y - u_ref| / u_ref")
+ax[0].set_title("Cook's membrane, nu = 0.4999 (dashed: displacement)")
+ax[1].legend(fontsize=7)
+fig.tight_layout()
+fig.savefig("doc/figures/near_incompressible_cook.png", dpi=110)
+END

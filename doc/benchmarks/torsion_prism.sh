@@ -1,0 +1,94 @@
+#!/bin/sh
+# Benchmark B-10 (Table 7.4): torsion of a square hyperelastic prism,
+# 1 x 1 x 5 mm, isochoric-volumetric neo-Hooke with K = 500 MPa and
+# mu = 161.148 MPa (the source's 5e8 and 1.61148e8 N/m^2), clamped at the
+# bottom (z = 0) and rotated about its axis at the top (z = 5), where
+# x and y follow the rotation and z is held. For each formulation: the
+# largest angle (whole degrees) that converges in ONE load step (no step
+# cuts, at most 'Maximum iterations' = 30 Newton iterations), found by
+# bisection between 0 and 128 degrees. Mesh: N x N x 5N cells (default
+# N = 8; the source used 16), horizon 1.51 h as in the source.
+# Writes doc/benchmarks/torsion_prism/results_N<N>.txt.
+# Usage (from the repository root, with a Release build):
+#   sh doc/benchmarks/torsion_prism.sh build-release/applications/pg_solve/pg_solve [N]
+set -e
+PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
+N=${2:-8}
+OUT=doc/benchmarks/torsion_prism
+WORK=$(mktemp -d)
+mkdir -p "$OUT"
+RESULTS="$OUT/results_N$N.txt"
+echo "# formulation | mesh | DoFs | largest single-step angle (deg) | first failing angle (deg) | Newton iterations at the largest angle | seconds per Newton step" > "$RESULTS"
+
+# converges <formulation> <angle in degrees>: exit status 0 if one load step
+# of that angle converges
+converges() {
+  radians=$(awk "BEGIN { printf \"%.15g\", $2 * atan2(0, -1) / 180 }")
+  cat > "$WORK/run.prm" <<END
+set Dimension = 3
+subsection Geometry
+  set Mesh          = hyper rectangle
+  set Lower corner  = 0, 0, 0
+  set Upper corner  = 1, 1, 5
+  set Subdivisions  = $N, $N, $((5 * N))
+end
+subsection Discretization
+  set Formulation    = $1
+  set Horizon factor = 1.51
+end
+subsection Material
+  set Model         = isochoric-volumetric neo-Hooke
+  set Bulk modulus  = 500
+  set Shear modulus = 161.148
+end
+subsection Boundary conditions
+  set Dirichlet = 4: xyz, 5: xyz
+  subsection Prescribed displacement
+    set Function constants  = a=$radians
+    set Function expression = 0.5 + (x - 0.5)*cos(a*t*z/5) - (y - 0.5)*sin(a*t*z/5) - x; 0.5 + (x - 0.5)*sin(a*t*z/5) + (y - 0.5)*cos(a*t*z/5) - y; 0
+  end
+end
+subsection Loading
+  set Load steps        = 1
+  set Maximum step cuts = 0
+end
+subsection Newton
+  set Maximum iterations = 30
+end
+subsection Linear solver
+  set Type = direct
+end
+subsection Output
+  set Directory = $WORK/out
+  set VTU       = false
+end
+END
+  "$PG_SOLVE" "$WORK/run.prm" > "$WORK/run.log" 2>&1
+}
+
+for f in "FEM" "FEM H1P0" "VCBCPPG V3sn Unl" "VCBCPPG V3sn UnlP0" \
+         "VCBCPBG V5sn Unl" "VCBCPBG V5sn UnlP0"; do
+  lo=0
+  hi=128
+  while [ $((hi - lo)) -gt 1 ]; do
+    mid=$(((lo + hi) / 2))
+    if converges "$f" $mid; then
+      lo=$mid
+      cp "$WORK/out/summary.json" "$WORK/best.json"
+    else
+      hi=$mid
+    fi
+  done
+  /usr/bin/env python3 - "$WORK/best.json" "$f" "$N" $lo $hi >> "$RESULTS" <<'END'
+import json, sys
+s = json.load(open(sys.argv[1]))
+t = s["timing"]
+n = max(s["newton_iterations"], 1)
+N = int(sys.argv[3])
+print("%s | %d x %d x %d | %d | %s | %s | %d | %.3f" % (
+    sys.argv[2], N, N, 5 * N, s["n_dofs"], sys.argv[4], sys.argv[5], n,
+    (t["assembly"] + t["solve"]) / n))
+END
+  tail -n 1 "$RESULTS"
+done
+rm -rf "$WORK"
