@@ -20,7 +20,7 @@ RESULTS="$OUT/results.txt"
 echo "# label | formulation | N | DoFs | tip u_y | Newton steps | seconds per Newton step (assembly + solve) | total seconds" > "$RESULTS"
 
 run() { # label formulation N [meshfree region]
-  name=$(echo "$1_$3" | tr ' ' '_')
+  name=$(echo "$1_$3" | tr ' /' '__')
   region=${4:-all}
   [ "$2" = FEM ] || [ "$2" = "FEM Q1P0" ] && region=none
   cat > "$WORK/$name.prm" <<END

@@ -7,17 +7,19 @@
 # largest angle (whole degrees) that converges in ONE load step (no step
 # cuts, at most 'Maximum iterations' = 30 Newton iterations), found by
 # bisection between 0 and 128 degrees. Mesh: N x N x 5N cells (default
-# N = 8; the source used 16), horizon 1.51 h as in the source.
-# Writes doc/benchmarks/torsion_prism/results_N<N>.txt.
+# N = 8; the source used 16), horizon 1.51 h as in the source. The load
+# step starts with 'Predictor' = linearized (default) or 'boundary values'.
+# Writes doc/benchmarks/torsion_prism/results_N<N>_<predictor>.txt.
 # Usage (from the repository root, with a Release build):
-#   sh doc/benchmarks/torsion_prism.sh build-release/applications/pg_solve/pg_solve [N]
+#   sh doc/benchmarks/torsion_prism.sh build-release/applications/pg_solve/pg_solve [N] [linearized|boundary values]
 set -e
 PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
 N=${2:-8}
+PREDICTOR=${3:-linearized}
 OUT=doc/benchmarks/torsion_prism
 WORK=$(mktemp -d)
 mkdir -p "$OUT"
-RESULTS="$OUT/results_N$N.txt"
+RESULTS="$OUT/results_N${N}_$(echo "$PREDICTOR" | tr ' ' '_').txt"
 echo "# formulation | mesh | DoFs | largest single-step angle (deg) | first failing angle (deg) | Newton iterations at the largest angle | seconds per Newton step" > "$RESULTS"
 
 # converges <formulation> <angle in degrees>: exit status 0 if one load step
@@ -51,6 +53,7 @@ end
 subsection Loading
   set Load steps        = 1
   set Maximum step cuts = 0
+  set Predictor         = $PREDICTOR
 end
 subsection Newton
   set Maximum iterations = 30

@@ -303,9 +303,11 @@ namespace pg
   {
     set_load_factor(t);
     make_constraints(constraints, false);
+    last_failure.clear();
+    if (prm.loading.linearized_predictor)
+      apply_linearized_predictor();
     constraints.distribute(solution_owned);
     update_ghost_values();
-    last_failure.clear();
 
     const NewtonSolver::Result result =
       NewtonSolver(prm.newton).solve(newton_operations());
@@ -316,6 +318,44 @@ namespace pg
     if (result.converged())
       summary.newton_residuals.push_back(result.residuals);
     return result.converged();
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::apply_linearized_predictor()
+  {
+    // The Dirichlet increment c(t) - u on every DoF with a prescribed value
+    // becomes the inhomogeneity of the update's constraints for one solve
+    // with the tangent of the last converged state.
+    bool moved = false;
+    for (const auto &line : constraints.get_lines())
+      if (line.entries.empty() &&
+          discretization.relevant_dofs.is_element(line.index) &&
+          zero_constraints.is_constrained(line.index))
+        {
+          const double increment = line.inhomogeneity - solution[line.index];
+          zero_constraints.set_inhomogeneity(line.index, increment);
+          moved = moved || (increment != 0.);
+        }
+    if (Utilities::MPI::max(moved ? 1 : 0, comm) == 1)
+      {
+        assemble(true);
+        double energy = 0;
+        if (reduced_failure().empty() && apply_newton_update(energy))
+          pcout << "    predictor: linearized step to the new boundary values"
+                << std::endl;
+        else
+          pcout << "    predictor failed; the step starts from the new "
+                   "boundary values"
+                << std::endl;
+      }
+    for (const auto &line : constraints.get_lines())
+      if (line.entries.empty() &&
+          discretization.relevant_dofs.is_element(line.index) &&
+          zero_constraints.is_constrained(line.index))
+        zero_constraints.set_inhomogeneity(line.index, 0.);
   }
 
 

@@ -31,6 +31,19 @@ namespace pg
                           "this many Newton iterations doubles the next "
                           "sub-step again (never beyond the rest of the load "
                           "step). 0: a cut step stays small.");
+        prm.declare_entry(
+          "Predictor",
+          "boundary values",
+          Patterns::Selection("boundary values|linearized"),
+          "How a load step starts. 'boundary values': the new Dirichlet "
+          "values are set on their nodes and Newton starts there, the rest "
+          "at the last converged state (a large step can invert the cells "
+          "next to a moved boundary before the first iteration). "
+          "'linearized': the first iteration solves the tangent system of "
+          "the last converged state for the Dirichlet increment (an "
+          "inhomogeneous constraint, as in deal.II's step-44), so the whole "
+          "body follows the boundary; it costs one assembly and one solve "
+          "more per step.");
       }
       prm.leave_subsection();
     }
@@ -42,9 +55,10 @@ namespace pg
     {
       prm.enter_subsection("Loading");
       {
-        load_steps        = prm.get_integer("Load steps");
-        maximum_step_cuts = prm.get_integer("Maximum step cuts");
-        easy_iterations   = prm.get_integer("Easy step iterations");
+        load_steps           = prm.get_integer("Load steps");
+        maximum_step_cuts    = prm.get_integer("Maximum step cuts");
+        easy_iterations      = prm.get_integer("Easy step iterations");
+        linearized_predictor = (prm.get("Predictor") == "linearized");
       }
       prm.leave_subsection();
     }

@@ -104,6 +104,15 @@ namespace pg
     bool
     solve_step(const double t, unsigned int &iterations);
     /**
+     * 'Predictor = linearized': one solve with the tangent of the last
+     * converged state for the Dirichlet increment (inhomogeneous update
+     * constraints), before Newton starts. The constraints of the update are
+     * homogeneous again afterwards.
+     */
+    void
+    apply_linearized_predictor();
+
+    /**
      * Solve matrix * update = rhs and add the update (with the homogeneous
      * constraints) to the solution, with @p energy = update . rhs; false,
      * with a message, if the linear solver does not converge.

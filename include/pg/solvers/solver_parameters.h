@@ -25,6 +25,12 @@ namespace pg
        * sub-step that converged in at most this many Newton iterations.
        */
       unsigned int easy_iterations;
+      /**
+       * Start each step with a linearized predictor for the Dirichlet
+       * increment ('Predictor = linearized') instead of setting the new
+       * boundary values alone.
+       */
+      bool linearized_predictor = false;
 
       static void
       declare_parameters(ParameterHandler &prm);
