@@ -8,7 +8,8 @@
 # coupled mixed model (UnlP0 particles on the right half, Q1P0 cells on the
 # left), with the time per Newton step. The reference is FEM Q1P0 on a
 # 256 x 256 mesh. Writes doc/benchmarks/near_incompressible_cook/results.txt
-# and doc/figures/near_incompressible_cook.png.
+# and doc/figures/near_incompressible_cook.png (PLOT_ONLY=1: redraw the
+# figure from an existing results.txt).
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/near_incompressible_cook.sh build-release/applications/pg_solve/pg_solve
 set -e
@@ -17,7 +18,6 @@ OUT=doc/benchmarks/near_incompressible_cook
 WORK=$(mktemp -d)
 mkdir -p "$OUT" doc/figures
 RESULTS="$OUT/results.txt"
-echo "# label | formulation | N | DoFs | tip u_y | Newton steps | seconds per Newton step (assembly + solve) | total seconds" > "$RESULTS"
 
 run() { # label formulation N [meshfree region]
   name=$(echo "$1_$3" | tr ' /' '__')
@@ -75,6 +75,8 @@ END
   tail -n 1 "$RESULTS"
 }
 
+if [ -z "$PLOT_ONLY" ]; then
+echo "# label | formulation | N | DoFs | tip u_y | Newton steps | seconds per Newton step (assembly + solve) | total seconds" > "$RESULTS"
 run reference "FEM Q1P0" 256
 for N in 4 8 16 32 64; do
   run "FEM Q1" FEM $N
@@ -86,8 +88,13 @@ for N in 4 8 16 32 64; do
   run "coupled UnlP0/Q1P0" "VCBCPPG V3sn UnlP0" $N "box 24, -1 : 49, 61"
 done
 rm -rf "$WORK"
+fi
 
-/usr/bin/env python3 - "$RESULTS" <<'END'
+# Debian's python3 has matplotlib (python3-matplotlib); a python3 without it
+# skips the figure.
+PYTHON=python3
+[ -x /usr/bin/python3 ] && PYTHON=/usr/bin/python3
+"$PYTHON" - "$RESULTS" <<'END'
 import sys
 rows = [l.split(" | ") for l in open(sys.argv[1]) if not l.startswith("#")]
 rows = [r for r in rows if len(r) == 8]
