@@ -15,6 +15,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
+#include <cmath>
 #include <random>
 
 template <int dim>
@@ -70,6 +71,32 @@ make_material(const std::string &model)
   parameters.density        = 1.;
   parameters.plane          = "strain";
   return pg::Materials::create_material<dim>(parameters);
+}
+
+/** A rotation by @p angle (about the axis (1, 2, 3) in 3-D). */
+template <int dim>
+dealii::Tensor<2, dim>
+rotation(const double angle)
+{
+  dealii::Tensor<2, dim> R;
+  if constexpr (dim == 2)
+    {
+      R[0][0] = R[1][1] = std::cos(angle);
+      R[0][1]           = -std::sin(angle);
+      R[1][0]           = std::sin(angle);
+    }
+  else
+    {
+      // about the axis (1, 2, 3) / |.|, Rodrigues' formula
+      dealii::Tensor<1, 3> a({1., 2., 3.});
+      a /= a.norm();
+      dealii::Tensor<2, 3> K;
+      K[0][1] = -a[2], K[0][2] = a[1], K[1][0] = a[2];
+      K[1][2] = -a[0], K[2][0] = -a[1], K[2][1] = a[0];
+      R = dealii::unit_symmetric_tensor<3>() + std::sin(angle) * K +
+          (1 - std::cos(angle)) * K * K;
+    }
+  return R;
 }
 
 #endif

@@ -30,31 +30,6 @@
 using namespace pg;
 
 template <int dim>
-Tensor<2, dim>
-rotation(const double angle)
-{
-  Tensor<2, dim> R;
-  if constexpr (dim == 2)
-    {
-      R[0][0] = R[1][1] = std::cos(angle);
-      R[0][1]           = -std::sin(angle);
-      R[1][0]           = std::sin(angle);
-    }
-  else
-    {
-      // about the x axis and then the z axis
-      const double c = std::cos(angle), s = std::sin(angle);
-      Tensor<2, 3> Rx, Rz;
-      Rx[0][0] = 1, Rx[1][1] = Rx[2][2] = c, Rx[1][2] = -s, Rx[2][1] = s;
-      Rz[2][2] = 1, Rz[0][0] = Rz[1][1] = c, Rz[0][1] = -s, Rz[1][0] = s;
-      R = Rz * Rx;
-    }
-  return R;
-}
-
-
-
-template <int dim>
 std::unique_ptr<Materials::Material<dim>>
 make_split_material(const std::string &model, const double nu)
 {

@@ -20,33 +20,6 @@
 
 using namespace pg;
 
-template <int dim>
-Tensor<2, dim>
-rotation(const double angle)
-{
-  Tensor<2, dim> R;
-  if constexpr (dim == 2)
-    {
-      R[0][0] = R[1][1] = std::cos(angle);
-      R[0][1]           = -std::sin(angle);
-      R[1][0]           = std::sin(angle);
-    }
-  else
-    {
-      // about the axis (1, 2, 3) / |.|, Rodrigues' formula
-      Tensor<1, 3> a({1., 2., 3.});
-      a /= a.norm();
-      Tensor<2, 3> K;
-      K[0][1] = -a[2], K[0][2] = a[1], K[1][0] = a[2];
-      K[1][2] = -a[0], K[2][0] = -a[1], K[2][1] = a[0];
-      R = unit_symmetric_tensor<3>() + std::sin(angle) * K +
-          (1 - std::cos(angle)) * K * K;
-    }
-  return R;
-}
-
-
-
 /**
  * Checks one element table at the relative nodal positions @p X (node 0
  * at the origin); returns {tangent error, translation residual, rotation
