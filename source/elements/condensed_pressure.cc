@@ -149,7 +149,7 @@ namespace pg
       (volumetric_table != nullptr ? *volumetric_table : table);
     const CondensedPressure fields = condensed_pressure(vol_table, y, split);
 
-    // The isochoric part and p d^2 J at every point; for separate
+    // The isochoric part and p d^2 theta at every point; for separate
     // volumetric points (PPG) two kernel calls.
     if (volumetric_table == nullptr)
       assemble_element(table,
@@ -180,8 +180,8 @@ namespace pg
           tangent->add(1., volumetric_tangent);
       }
 
-    // The coupling of the points through p(J-bar):
-    // W_vol''(Theta) / W g (x) g-bar.
+    // The coupling of the points through p(theta-bar):
+    // W_vol''(Theta) / W g (x) g' (test and trial vectors).
     if (tangent != nullptr)
       {
         double volume = 0;
@@ -189,7 +189,10 @@ namespace pg
           volume += w;
         Vector<double> g_test, g_trial;
         mean_volume_measure_derivative(vol_table, y, split, true, g_test);
-        mean_volume_measure_derivative(vol_table, y, split, false, g_trial);
+        if (vol_table.test_is_trial)
+          g_trial = g_test;
+        else
+          mean_volume_measure_derivative(vol_table, y, split, false, g_trial);
         const double factor =
           split.volumetric_strain_energy_second_derivative(fields.dilatation) /
           volume;
