@@ -9,7 +9,9 @@
 # left), with the time per Newton step. The reference is FEM Q1P0 on a
 # 256 x 256 mesh. Writes doc/benchmarks/near_incompressible_cook/results.txt
 # and doc/figures/near_incompressible_cook.png (PLOT_ONLY=1: redraw the
-# figure from an existing results.txt).
+# figure from an existing results.txt; ONLY=<label>: run one method and
+# append its rows). U1SUnl (eq. 6.18) is shown with the displacement
+# formulations: its pseudo-energy takes nu~ = 0.49.
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/near_incompressible_cook.sh build-release/applications/pg_solve/pg_solve
 set -e
@@ -20,6 +22,8 @@ mkdir -p "$OUT" doc/figures
 RESULTS="$OUT/results.txt"
 
 run() { # label formulation N [meshfree region]
+  # ONLY=<label>: run that method alone and append its rows
+  [ -n "$ONLY" ] && [ "$1" != "$ONLY" ] && return 0
   name=$(echo "$1_$3" | tr ' /' '__')
   region=${4:-all}
   [ "$2" = FEM ] || [ "$2" = "FEM Q1P0" ] && region=none
@@ -76,7 +80,7 @@ END
 }
 
 if [ -z "$PLOT_ONLY" ]; then
-echo "# label | formulation | N | DoFs | tip u_y | Newton steps | seconds per Newton step (assembly + solve) | total seconds" > "$RESULTS"
+[ -n "$ONLY" ] || echo "# label | formulation | N | DoFs | tip u_y | Newton steps | seconds per Newton step (assembly + solve) | total seconds" > "$RESULTS"
 run reference "FEM Q1P0" 256
 for N in 4 8 16 32 64; do
   run "FEM Q1" FEM $N
@@ -86,6 +90,7 @@ for N in 4 8 16 32 64; do
   run "VCBCPPG V3sn Unl" "VCBCPPG V3sn Unl" $N
   run "VCBCPPG V3sn UnlP0" "VCBCPPG V3sn UnlP0" $N
   run "coupled UnlP0/Q1P0" "VCBCPPG V3sn UnlP0" $N "box 24, -1 : 49, 61"
+  run "VCBCPBG V5sn U1SUnl" "VCBCPBG V5sn U1SUnl" $N
 done
 rm -rf "$WORK"
 fi

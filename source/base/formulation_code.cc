@@ -10,14 +10,14 @@ namespace pg
     const std::string valid_parts =
       "Valid codes read '[VC|VC2][BC]<method> [V<n><b>] <points> [noBC] "
       "[TL]' (Table 7.1) with <method> = PBG, PPG (= PPG1), PPG1 or PPG2, "
-      "the VC correction function V1, V3 or V5 (default V3 for PPG, V5 for "
+      "the VC correction function V1 ... V5 (default V3 for PPG, V5 for "
       "PBG, V1 for VC2) and its boundary option <b> = p, s or sn (default "
-      "sn; VC2 takes s), and <points> = Unl (default), U1 (PBG only), U2 "
-      "or UnlP0 (mixed, PBG or PPG). "
+      "sn; VC2 takes s), and <points> = Unl (default), U1 (PBG only), U2, "
+      "UnlP0 (mixed, PBG or PPG) or U1SUnl (stabilised U1, PBG only). "
       "The bond correction BC is the default of Unl; 'noBC' switches it "
       "off. E.g. 'VCPPG V3sn Unl' (= 'VCBCPPG V3sn Unl TL'), 'VCPBG Unl' "
       "(= 'VCBCPBG V5sn Unl TL'), 'PBG Unl noBC', 'PBG U1', "
-      "'VC2PPG V1s U2', 'VCPPG V3sn UnlP0'; or 'FEM' (Q1/H1), 'FEM Q1P0' "
+      "'VC2PPG V1s U2', 'VCPPG V3sn UnlP0', 'VCPBG U1SUnl'; or 'FEM' (Q1/H1), 'FEM Q1P0' "
       "(H1P0 in 3-D) or 'CPD'.";
 
 
@@ -69,17 +69,22 @@ namespace pg
           using B  = FormulationCode::VCBoundary;
           text += std::string(" V") +
                   (code.correction_function == CF::v1 ? "1" :
+                   code.correction_function == CF::v2 ? "2" :
                    code.correction_function == CF::v3 ? "3" :
+                   code.correction_function == CF::v4 ? "4" :
                                                         "5") +
                   (code.vc_boundary == B::p ? "p" :
                    code.vc_boundary == B::s ? "s" :
                                               "sn");
         }
-      text += (p0                                          ? " UnlP0" :
-               code.points == FormulationCode::Points::unl ? " Unl" :
-               code.points == FormulationCode::Points::u1  ? " U1" :
-                                                             " U2");
-      if (code.points == FormulationCode::Points::unl && !code.bond_correction)
+      using Points = FormulationCode::Points;
+      text += (p0                         ? " UnlP0" :
+               code.points == Points::unl ? " Unl" :
+               code.points == Points::u1  ? " U1" :
+               code.points == Points::u2  ? " U2" :
+                                            " U1SUnl");
+      if ((code.points == Points::unl || code.points == Points::u1s_unl) &&
+          !code.bond_correction)
         text += " noBC";
       return text + " TL";
     }
@@ -119,6 +124,34 @@ namespace pg
            "first-order formulation (pg read it without BC before December "
            "2026); write <" +
            written + " noBC> to switch BC off.";
+  }
+
+
+
+  FormulationCode
+  FormulationCode::underintegrated_part() const
+  {
+    if (points != Points::u1s_unl)
+      return *this;
+    FormulationCode part            = *this;
+    part.points                     = Points::u1;
+    part.bond_correction            = false;
+    part.bond_correction_by_default = false;
+    part.text                       = resolved_text(part);
+    return part;
+  }
+
+
+
+  FormulationCode
+  FormulationCode::stabilisation_part() const
+  {
+    if (points != Points::u1s_unl)
+      return *this;
+    FormulationCode part = *this;
+    part.points          = Points::unl;
+    part.text            = resolved_text(part);
+    return part;
   }
 
 
@@ -217,14 +250,16 @@ namespace pg
     for (unsigned int i = 1; i < words.size(); ++i)
       {
         const std::string &w = words[i];
-        if (w == "Unl" || w == "U1" || w == "U2" || w == "UnlP0")
+        if (w == "Unl" || w == "U1" || w == "U2" || w == "UnlP0" ||
+            w == "U1SUnl")
           {
             if (have_points)
               reject(code, "it names two formulations.");
             have_points   = true;
-            result.points = (w == "U1" ? FormulationCode::Points::u1 :
-                             w == "U2" ? FormulationCode::Points::u2 :
-                                         FormulationCode::Points::unl);
+            result.points = (w == "U1"     ? FormulationCode::Points::u1 :
+                             w == "U2"     ? FormulationCode::Points::u2 :
+                             w == "U1SUnl" ? FormulationCode::Points::u1s_unl :
+                                             FormulationCode::Points::unl);
             if (w == "UnlP0")
               result.fields = FormulationCode::Fields::condensed_p0;
           }
@@ -250,17 +285,14 @@ namespace pg
           {
             if (have_correction_function)
               reject(code, "it names two VC correction functions.");
-            have_correction_function = true;
-            if (w[1] == '2' || w[1] == '4')
-              reject(code,
-                     "the correction functions V2 and V4 need second-order "
-                     "(WLS2) shape functions, which are not yet available; "
-                     "use V1, V3 or V5.");
-            result.correction_function =
-              (w[1] == '1' ? FormulationCode::CorrectionFunction::v1 :
-               w[1] == '3' ? FormulationCode::CorrectionFunction::v3 :
-                             FormulationCode::CorrectionFunction::v5);
-            const std::string option = w.substr(2);
+            have_correction_function   = true;
+            using CF                   = FormulationCode::CorrectionFunction;
+            result.correction_function = (w[1] == '1' ? CF::v1 :
+                                          w[1] == '2' ? CF::v2 :
+                                          w[1] == '3' ? CF::v3 :
+                                          w[1] == '4' ? CF::v4 :
+                                                        CF::v5);
+            const std::string option   = w.substr(2);
             if (option == "p")
               result.vc_boundary = FormulationCode::VCBoundary::p;
             else if (option == "s")
@@ -273,7 +305,7 @@ namespace pg
                        "> is unknown; use p, s or sn.");
           }
         else if (w == "IUnlP0" || w == "U2P1" || w == "U2P1C" ||
-                 w == "Unl+P1C" || w == "U1SUnl" || w == "U1SIG")
+                 w == "Unl+P1C" || w == "U1SIG")
           reject(code, "the formulation <" + w + "> is not yet available.");
         else
           reject(code, "the part <" + w + "> is unknown.");
@@ -281,8 +313,11 @@ namespace pg
 
     if (have_correction_function && !result.variational_consistency)
       reject(code,
-             "a correction function (V1, V3, V5) needs the VC prefix, e.g. "
+             "a correction function (V1 ... V5) needs the VC prefix, e.g. "
              "'VCPPG V3sn Unl'.");
+    // Table 7.1: V3 for PPG, V5 for PBG (whatever the points; section 6.1
+    // uses V4 for U2, but V4 leaves the VC system singular with the default
+    // sn, doc/ambiguities.md item 22); V1 for VC2
     if (result.variational_consistency && !have_correction_function)
       result.correction_function =
         (result.second_order_consistency ?
@@ -305,8 +340,15 @@ namespace pg
         if (result.correction_function ==
             FormulationCode::CorrectionFunction::v5)
           reject(code,
-                 "V5 (the bond projector) belongs to PBG; use V1 or V3 "
+                 "V5 (the bond projector) belongs to PBG; use V1, V3 or V4 "
                  "with VC2.");
+        if (result.correction_function ==
+            FormulationCode::CorrectionFunction::v2)
+          reject(code,
+                 "V2 corrects each direction with its own second "
+                 "derivative, and the second-order correction VC2 needs "
+                 "one correction function for all; use V1, V3 or V4 with "
+                 "VC2.");
       }
     if (result.fields == FormulationCode::Fields::condensed_p0 &&
         result.method == FormulationCode::Method::ppg2)
@@ -320,12 +362,19 @@ namespace pg
       reject(code,
              "U1 (one evaluation point per family) is the underintegrated "
              "PBG; use 'PBG U1'.");
+    if (result.points == FormulationCode::Points::u1s_unl &&
+        result.method != FormulationCode::Method::pbg)
+      reject(code,
+             "U1SUnl (eq. 6.18) stabilises the underintegrated PBG U1 with "
+             "a PBG Unl pseudo-energy; use 'VCPBG U1SUnl'.");
 
     // The bond correction (Table 7.1: "default for all first order
     // formulations"). U1 evaluates at the master only, where the bond is
     // zero and eq. (5.55) does nothing; U2 is second order, which BC would
     // destroy (section 5.3.1). doc/ambiguities.md has the reading.
-    if (result.points == FormulationCode::Points::unl)
+    if (result.points == FormulationCode::Points::u1s_unl)
+      result.bond_correction = !no_bc; // BC of its Unl part; no notice
+    else if (result.points == FormulationCode::Points::unl)
       {
         // (UnlP0 is newer than that change: no notice)
         if (!result.bond_correction && !no_bc &&

@@ -328,6 +328,19 @@ namespace pg
       // with the isochoric/volumetric split.
       const FormulationCode code =
         parse_formulation_code(discretization.formulation);
+      AssertThrow(discretization.hourglass_coefficient == 0. ||
+                    code.points == FormulationCode::Points::u1,
+                  ExcBadParameter(
+                    "Discretization/Hourglass coefficient",
+                    Utilities::to_string(discretization.hourglass_coefficient),
+                    "the hourglass force stabilises the underintegrated "
+                    "families U1 (classical correspondence), and the "
+                    "formulation is <" +
+                      code.text +
+                      ">. Use 'Formulation = PBG U1' (Peridigm's "
+                      "correspondence) or set the coefficient to 0; "
+                      "'VCPBG U1SUnl' is the dissertation's stabilised "
+                      "U1."));
       if (code.fields == FormulationCode::Fields::condensed_p0)
         {
           AssertThrow(material.model == "isochoric-volumetric neo-Hooke" ||

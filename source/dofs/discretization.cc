@@ -82,12 +82,22 @@ namespace pg
                          cpd_parameters.partial_volumes},
             discretization_parameters.horizon_factor,
             discretization_parameters.horizon);
+        const auto base =
+          ShapeFunctions::parse_base(discretization_parameters.shape_functions);
         family_elements = std::make_unique<FamilyElements<dim>>(
           particles,
           families,
-          is_cpd ? parse_formulation_code("PBG U1") : formulation,
-          ShapeFunctions::parse_base(discretization_parameters.shape_functions),
+          is_cpd ? parse_formulation_code("PBG U1") :
+                   formulation.underintegrated_part(),
+          base,
           discretization_parameters.weight_exponent);
+        if (formulation.points == FormulationCode::Points::u1s_unl)
+          stabilisation_elements = std::make_unique<FamilyElements<dim>>(
+            particles,
+            families,
+            formulation.stabilisation_part(),
+            base,
+            discretization_parameters.weight_exponent);
         for (unsigned int k = 0; k < particles.n_particles(); ++k)
           if (owned_dofs.is_element(particles.dof(k, 0)))
             owned_families.push_back(k);
@@ -104,6 +114,14 @@ namespace pg
             family_elements->initialize(needed);
             for (unsigned int f = 0; f < owned_families.size(); ++f)
               family_elements->build(owned_families[f], family_tables[f]);
+            if (stabilisation_elements)
+              {
+                stabilisation_tables.resize(owned_families.size());
+                stabilisation_elements->initialize(needed);
+                for (unsigned int f = 0; f < owned_families.size(); ++f)
+                  stabilisation_elements->build(owned_families[f],
+                                                stabilisation_tables[f]);
+              }
           }
         catch (const ExcSingularFamily &)
           {
@@ -114,12 +132,16 @@ namespace pg
         if (!serial && Utilities::MPI::logical_or(failed, comm))
           {
             // every rank repeats the checks: of its needed families at the
-            // master (initialize()), then of its owned ones (build())
-            const auto rejected = [&](const unsigned int k,
+            // master (initialize()), then of its owned ones (build(); for
+            // U1SUnl those of the stabilisation, at every member)
+            const FamilyElements<dim> &checked  = stabilisation_elements ?
+                                                    *stabilisation_elements :
+                                                    *family_elements;
+            const auto                 rejected = [&](const unsigned int k,
                                       const bool         master_only) {
               try
                 {
-                  family_elements->check_family(k, master_only);
+                  checked.check_family(k, master_only);
                   return false;
                 }
               catch (const ExcSingularFamily &)
@@ -136,7 +158,7 @@ namespace pg
                 }
             first = Utilities::MPI::min(first, comm);
             if (first != numbers::invalid_unsigned_int)
-              family_elements->check_family(first, true);
+              checked.check_family(first, true);
             for (const unsigned int k : owned_families)
               if (rejected(k, false))
                 {
@@ -145,7 +167,7 @@ namespace pg
                 }
             first = Utilities::MPI::min(first, comm);
             if (first != numbers::invalid_unsigned_int)
-              family_elements->check_family(first, false);
+              checked.check_family(first, false);
             AssertThrow(false, ExcInternalError());
           }
       }

@@ -133,6 +133,39 @@ namespace pg
 
 
   template <int dim>
+  std::string
+  CorrectionSystem<dim>::failure_advice(const FormulationCode &formulation)
+  {
+    // V4 keeps second-order consistency (eq. 5.58): the second-order Gauss
+    // identities sum_k X^k (x) X^k (x) d^k then do not depend on the
+    // factors either, and the system keeps null vectors that the options p
+    // and sn do not remove (doc/ambiguities.md, item 22)
+    const bool v4 = (formulation.correction_function ==
+                     FormulationCode::CorrectionFunction::v4);
+    return std::string(v4 ? "V4 keeps second-order consistency, which "
+                            "leaves the system singular with the boundary "
+                            "options p and sn; write V4s, or V3/V5, in " :
+                            "change the VC boundary option (p, s or sn) "
+                            "of ") +
+           "'Formulation' in subsection 'Discretization', or check for "
+           "coincident particles (unmerged mesh vertices: 'Coincident "
+           "vertices' in subsection 'Geometry').";
+  }
+
+
+
+  template <int dim>
+  void
+  CorrectionSystem<dim>::set_prescribed_targets(
+    const std::vector<Tensor<1, dim>> &targets)
+  {
+    prescribed_targets      = targets;
+    formulation.vc_boundary = FormulationCode::VCBoundary::p;
+  }
+
+
+
+  template <int dim>
   void
   CorrectionSystem<dim>::classify_rows()
   {
@@ -163,7 +196,9 @@ namespace pg
         surface.push_back(k);
         for (const auto &area : areas)
           normal[k] += area.second;
-        if (formulation.vc_boundary == VCBoundary::p)
+        if (!prescribed_targets.empty())
+          target[k] = prescribed_targets[k];
+        else if (formulation.vc_boundary == VCBoundary::p)
           target[k] = normal[k];
         normal[k] /= normal[k].norm();
         const Tensor<1, dim> &edge = particles->edge_direction(k);
@@ -449,9 +484,15 @@ namespace pg
     // of MPI ranks. D is the largest entry of each row. Factors by serial
     // KLU on one rank, by distributed MUMPS on more (KLU would hold all
     // factors on rank 0; MUMPS changes the round-off digits of alpha).
-    factors.solver = (solver == "direct" ? "direct" :
-                      singular           ? "direct (singular system)" :
-                                           "iterative");
+    //
+    // V2 (second derivatives, zero sum over the neighbours) leaves zero
+    // blocks on the diagonal, on which ILU(0) breaks down: solved directly.
+    const bool zero_diagonal = (formulation.correction_function ==
+                                FormulationCode::CorrectionFunction::v2);
+    factors.solver           = (solver == "direct" ? "direct" :
+                                singular      ? "direct (singular system)" :
+                                zero_diagonal ? "direct (V2: zero diagonal)" :
+                                                "iterative");
     if (factors.solver == "iterative")
       {
         try
@@ -490,12 +531,8 @@ namespace pg
             "Amesos_Mumps" :
             "Amesos_Klu");
         AssertThrow(corrections < 50,
-                    ExcMessage(
-                      "The VC system could not be solved: change the VC "
-                      "boundary option of 'Formulation' in subsection "
-                      "'Discretization' (p, s or sn), or check for "
-                      "coincident particles (unmerged mesh vertices: "
-                      "'Coincident vertices' in subsection 'Geometry')."));
+                    ExcMessage("The VC system could not be solved: " +
+                               failure_advice(formulation)));
       }
     LinearAlgebra::Vector ghosted(owned_dofs, particle_dofs, comm);
     ghosted = solution;

@@ -30,8 +30,10 @@ namespace pg
           "order formulations'), so 'PBG Unl' is 'BCPBG Unl TL'; 'noBC' "
           "switches it off ('PBG Unl noBC'). U1 and U2 take no BC. VC "
           "switches the variational-consistency correction on (section "
-          "5.3.2) with the correction function V1, V3 or V5 (default V3 for "
-          "PPG, V5 for PBG) and the boundary option p, s or sn (default sn). "
+          "5.3.2) with the correction function V1 (constant), V2 (WLS2 "
+          "second derivatives), V3 (MLS1 value), V4 (WLS2 value) or V5 (V3 "
+          "with the bond projector); default V3 for PPG, V5 for PBG; and the "
+          "boundary option p, s or sn (default sn; V4 needs s). "
           "VC2 adds the second-order correction (section 11.6); it is built "
           "on PPG2, so 'VC2PPG' means PPG2, and it takes the boundary option "
           "s (default correction function V1). The screen and summary.json "
@@ -40,12 +42,16 @@ namespace pg
           "family, condensed; PBG or PPG, with 'Model = "
           "isochoric-volumetric neo-Hooke' or 'linear elastic' in plane "
           "strain or 3-D; the FE cells of a coupled model are then Q1P0. "
+          "U1SUnl (PBG only, eq. 6.18): U1 stabilised by a pseudo-energy "
+          "with nu~ = min(0.49, nu) on the Unl functions of every family "
+          "member (BC default, VC corrects both); for nu <= 0.49 it equals "
+          "Unl. "
           "FEM uses Q1 elements everywhere (H1 in 3-D); 'FEM Q1P0' (= 'FEM "
           "H1P0') the mixed Q1P0/H1P0 cells with P0 pressure and dilatation "
           "condensed per cell. Examples: 'PBG Unl', 'VCPBG V5sn Unl' (= "
           "'VCBCPBG V5sn Unl TL'), 'VCPPG V3sn Unl' (= 'VCBCPPG V3sn Unl "
-          "TL'), 'PBG U1', 'VC2PPG V1s U2', 'VCPPG V3sn UnlP0', 'FEM "
-          "Q1P0'. CPD: "
+          "TL'), 'PBG U1', 'VC2PPG V1s U2', 'VCPPG V3sn UnlP0', 'VCPBG "
+          "U1SUnl', 'FEM Q1P0'. CPD: "
           "continuum-kinematics-inspired peridynamics with the constants of "
           "subsection 'CPD' (the meshfree cells' vertices interact within "
           "the horizon; no shape functions).");
@@ -88,6 +94,23 @@ namespace pg
                           Patterns::Double(0.),
                           "n in the weight omega = |dX|^(-2n) (eqs. 4.5, "
                           "5.42).");
+        prm.declare_entry(
+          "Hourglass coefficient",
+          "0",
+          Patterns::Double(0.),
+          "Peridigm's penalty ('hourglass') stabilisation of the classical "
+          "correspondence, for the U1 formulations only ('PBG U1'): the "
+          "force of Peridigm's 'Elastic Correspondence' material with its "
+          "'Hourglass Coefficient' alpha (src/materials/correspondence.cxx, "
+          "computeHourglassForce()), with a consistent tangent. Per bond "
+          "xi of a master k, with the master's deformation gradient F, "
+          "Y = y^j - y^k and z = F xi - Y: t = -C (z . Y) Y / (|xi| |Y|), "
+          "C = 18 alpha K / (pi delta^4) (K the bulk modulus, delta the "
+          "horizon of k), applied as +V^k V^j t to k and -V^k V^j t to j. "
+          "Peridigm's examples use 0.02; 0 (default) switches it off. "
+          "Peridigm's deformation gradient has the weight omega = 1: set "
+          "'Weight exponent = 0' to reproduce it. doc/element-view.md "
+          "explains the differences to U1SUnl.");
       }
       prm.leave_subsection();
     }
@@ -144,8 +167,9 @@ namespace pg
           horizon_factor = factor_text.empty() ?
                              2.51 :
                              positive(factor_text, "Horizon factor");
-        nearest_neighbours = prm.get_integer("Nearest neighbours");
-        weight_exponent    = prm.get_double("Weight exponent");
+        nearest_neighbours    = prm.get_integer("Nearest neighbours");
+        weight_exponent       = prm.get_double("Weight exponent");
+        hourglass_coefficient = prm.get_double("Hourglass coefficient");
       }
       prm.leave_subsection();
     }

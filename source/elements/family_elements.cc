@@ -98,9 +98,7 @@ namespace pg
         phi.resize(families.n_families());
         for (unsigned int k = 0; k < families.n_families(); ++k)
           if (is_needed(k))
-            phi[k] =
-              ShapeFunctions::correction_function(family_correction_function(k),
-                                                  geometry(k));
+            checked_correction_function(k, geometry(k), phi[k]);
       }
   }
 
@@ -120,6 +118,38 @@ namespace pg
       (master_only || u1) ? 1 : families.members(k).size();
     for (unsigned int point = 0; point < n_points; ++point)
       checked_gradients(k, geom, point, g);
+    if (master_only && formulation.variational_consistency)
+      checked_correction_function(k, geom, g);
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyElements<dim>::checked_correction_function(
+    const unsigned int                         k,
+    const ShapeFunctions::FamilyGeometry<dim> &geometry,
+    std::vector<Tensor<1, dim>>               &values) const
+  {
+    const double cond =
+      ShapeFunctions::correction_function(family_correction_function(k),
+                                          geometry,
+                                          values);
+    if (!(cond <= maximum_condition_number))
+      {
+        std::ostringstream where, detail;
+        where << "(" << particles.position(k) << ")";
+        detail << " for the WLS2 fit of the VC correction function V2/V4 "
+                  "(condition number "
+               << cond << " > " << maximum_condition_number
+               << "; the quadratic fit needs " << (dim == 2 ? 6 : 10)
+               << " neighbours not on one conic; or use V3/V5)";
+        AssertThrow(false,
+                    ExcSingularFamily(k,
+                                      where.str(),
+                                      families.n_neighbours(k),
+                                      detail.str()));
+      }
   }
 
 
@@ -175,7 +205,7 @@ namespace pg
     const unsigned int                         point,
     const unsigned int                         a) const
   {
-    return phi[k][a] * (projector(geometry, point) * alpha[k]);
+    return diagonal(phi[k][a]) * (projector(geometry, point) * alpha[k]);
   }
 
 
@@ -204,9 +234,9 @@ namespace pg
         // families this rank does not need have no data (initialize())
         for (unsigned int a = 0; a < master[k].size(); ++a)
           {
-            Tensor<1, dim> c = phi[k][a] * alpha[k];
-            if (!second_order_factors.empty())
-              c += phi[k][a] * (second_order_factors[k] * geom.bonds[a]);
+            Tensor<1, dim> c = diagonal(phi[k][a]) * alpha[k];
+            if (!second_order_factors.empty()) // V1, V3: phi is a scalar
+              c += phi[k][a][0] * (second_order_factors[k] * geom.bonds[a]);
             if (formulation.method == FormulationCode::Method::pbg)
               master[k][a] += c;
             else
@@ -218,7 +248,7 @@ namespace pg
 
 
   template <int dim>
-  const std::vector<double> &
+  const std::vector<Tensor<1, dim>> &
   FamilyElements<dim>::correction_function_values(const unsigned int k) const
   {
     AssertIndexRange(k, phi.size());

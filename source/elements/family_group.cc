@@ -1,6 +1,7 @@
 #include <pg/base/global_reader.h>
 #include <pg/elements/condensed_pressure.h>
 #include <pg/elements/family_group.h>
+#include <pg/elements/u1_stabilisation.h>
 
 namespace pg
 {
@@ -19,6 +20,11 @@ namespace pg
       std::vector<Tensor<1, dim>> y;
       /** The volumetric point of a PPG UnlP0 family. */
       QuadratureTable<dim> master_table;
+      /** The terms of a U1SUnl family. */
+      U1SUnlScratch u1s_unl;
+      /** Reference bonds and volumes of a family with hourglass force. */
+      std::vector<Tensor<1, dim>> xi;
+      std::vector<double>         volumes;
     };
   } // namespace
 
@@ -132,11 +138,33 @@ namespace pg
 
 
   template <int dim>
+  void
+  FamilyGroup<dim>::set_stabilisation(
+    const U1Stabilisation<dim> &new_stabilisation)
+  {
+    Assert((new_stabilisation.tables == nullptr ||
+            (new_stabilisation.tables->size() == family_tables.size() &&
+             new_stabilisation.pseudo_material != nullptr &&
+             material.n_state_variables() == 0)) &&
+             (new_stabilisation.hourglass_constants.empty() ||
+              new_stabilisation.hourglass_constants.size() ==
+                family_tables.size()) &&
+             condensed_pressure == nullptr,
+           ExcInternalError());
+    stabilisation = new_stabilisation;
+  }
+
+
+
+  template <int dim>
   std::string
   FamilyGroup<dim>::name() const
   {
-    return condensed_pressure != nullptr ? "PG families (UnlP0)" :
-                                           "PG families";
+    return condensed_pressure != nullptr   ? "PG families (UnlP0)" :
+           stabilisation.tables != nullptr ? "PG families (U1SUnl)" :
+           !stabilisation.hourglass_constants.empty() ?
+                                             "PG families (U1, hourglass)" :
+                                             "PG families";
   }
 
 
@@ -169,6 +197,27 @@ namespace pg
   {
     auto &scratch = static_cast<FamilyScratch<dim> &>(scratch_base);
     this->gather(e, u, local.dofs, scratch.y);
+    FullMatrix<double> *tangent = local.with_matrix ? &local.matrix : nullptr;
+    if (stabilisation.tables != nullptr)
+      {
+        const auto &unl_table = (*stabilisation.tables)[e];
+        if (stabilisation.master_terms)
+          assemble_u1s_unl_element(family_tables[e],
+                                   unl_table,
+                                   scratch.y,
+                                   material,
+                                   *stabilisation.pseudo_material,
+                                   local.residual,
+                                   tangent,
+                                   scratch.u1s_unl);
+        else
+          assemble_element(unl_table,
+                           scratch.y,
+                           material,
+                           local.residual,
+                           tangent);
+        return;
+      }
     if (condensed_pressure != nullptr)
       {
         const bool master_point = (family_elements != nullptr);
@@ -188,9 +237,29 @@ namespace pg
                      scratch.y,
                      material,
                      local.residual,
-                     local.with_matrix ? &local.matrix : nullptr,
+                     tangent,
                      history.committed,
                      history.trial);
+    if (!stabilisation.hourglass_constants.empty())
+      {
+        const unsigned int k       = this->owned_families[e];
+        const auto         members = this->families.members(k);
+        scratch.xi.resize(members.size());
+        scratch.volumes.resize(members.size());
+        for (unsigned int b = 0; b < members.size(); ++b)
+          {
+            scratch.xi[b] = this->particles.position(members[b]) -
+                            this->particles.position(k);
+            scratch.volumes[b] = this->particles.volume(members[b]);
+          }
+        add_hourglass_force(family_tables[e],
+                            scratch.xi,
+                            scratch.y,
+                            scratch.volumes,
+                            stabilisation.hourglass_constants[e],
+                            local.residual,
+                            tangent);
+      }
   }
 
 

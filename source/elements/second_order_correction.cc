@@ -42,7 +42,7 @@ namespace pg
             {
               Tensor<1, dim> t = g[j];
               if (!a1.empty())
-                t += phi[j] * (a1[k] + a2[k] * geom.bonds[j]);
+                t += phi[j][0] * (a1[k] + a2[k] * geom.bonds[j]);
               const double w = geom.volumes[j];
               d[members[j]] += w * t;
               d[k] -= w * t;
@@ -109,7 +109,7 @@ namespace pg
             for (unsigned int s = 0; s < m; ++s)
               {
                 const double c   = (s == 0 ? 1. : geom.bonds[j][s - 1]);
-                const double val = geom.volumes[j] * phi[j] * c;
+                const double val = geom.volumes[j] * phi[j][0] * c;
                 add(members[j] * m, k * m + s, val);
                 add(k * m, k * m + s, -val);
                 for (unsigned int e = 0; e < dim; ++e)

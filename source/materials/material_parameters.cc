@@ -72,6 +72,21 @@ namespace pg
 
 
 
+    Material
+    Material::with_poissons_ratio(const double nu) const
+    {
+      Material result       = *this;
+      result.poissons_ratio = nu;
+      if (bulk_modulus)
+        {
+          result.bulk_modulus  = youngs_modulus / (3. * (1. - 2. * nu));
+          result.shear_modulus = youngs_modulus / (2. * (1. + nu));
+        }
+      return result;
+    }
+
+
+
     double
     Material::model_double(const std::string &name) const
     {

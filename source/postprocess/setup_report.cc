@@ -53,7 +53,8 @@ namespace pg
               << (p0                                                 ? "UnlP0" :
                   formulation.points == FormulationCode::Points::unl ? "Unl" :
                   formulation.points == FormulationCode::Points::u1  ? "U1" :
-                                                                       "U2")
+                  formulation.points == FormulationCode::Points::u2  ? "U2" :
+                                                                       "U1SUnl")
               << ", "
               << (formulation.points == FormulationCode::Points::u2 ?
                     std::string("WTE2") :
@@ -62,6 +63,17 @@ namespace pg
               << (formulation.bond_correction ? "on" : "off") << ")";
       if (!formulation.notice().empty())
         pcout << "\n  " << formulation.notice();
+      if (formulation.points == FormulationCode::Points::u1s_unl)
+        pcout << "\n  U1SUnl:          stabilisation nu~ = "
+              << std::min(0.49, prm.material.poissons_ratio)
+              << (prm.material.poissons_ratio > 0.49 ?
+                    "" :
+                    " = nu: the families equal Unl (eq. 6.18)");
+      if (prm.discretization.hourglass_coefficient > 0.)
+        pcout << "\n  hourglass:       coefficient "
+              << prm.discretization.hourglass_coefficient
+              << " (Peridigm's penalty force, C = 18 alpha K / (pi "
+                 "delta^4))";
       if (cpd)
         {
           const auto n = cpd->n_interactions();

@@ -2,6 +2,7 @@
 #include <pg/constraints/boundary_constraints.h>
 #include <pg/constraints/support_check.h>
 #include <pg/elements/family_group.h>
+#include <pg/elements/u1_stabilisation.h>
 #include <pg/elements/unit_stress_residual.h>
 #include <pg/postprocess/problem_view.h>
 #include <pg/problem.h>
@@ -123,17 +124,34 @@ namespace pg
                                         particles,
                                         *discretization.cpd);
     else
-      family_group = std::make_unique<FamilyGroup<dim>>(
-        discretization.owned_families,
-        discretization.families,
-        particles,
-        discretization.family_tables,
-        material,
-        condensed_pressure,
-        (condensed_pressure != nullptr &&
-         formulation.method != FormulationCode::Method::pbg) ?
-          discretization.family_elements.get() :
-          nullptr);
+      {
+        auto families = std::make_unique<FamilyGroup<dim>>(
+          discretization.owned_families,
+          discretization.families,
+          particles,
+          discretization.family_tables,
+          material,
+          condensed_pressure,
+          (condensed_pressure != nullptr &&
+           formulation.method != FormulationCode::Method::pbg) ?
+            discretization.family_elements.get() :
+            nullptr);
+        if (formulation.points == FormulationCode::Points::u1s_unl)
+          {
+            // eq. (6.20) without plasticity: E~ = E, nu~ = min(0.49, nu)
+            const double nu = prm.material.poissons_ratio;
+            pseudo_material = Materials::create_material<dim>(
+              prm.material.with_poissons_ratio(std::min(0.49, nu)));
+            U1Stabilisation<dim> stabilisation;
+            stabilisation.tables = &discretization.stabilisation_tables;
+            stabilisation.pseudo_material = pseudo_material.get();
+            stabilisation.master_terms    = (nu > 0.49);
+            families->set_stabilisation(stabilisation);
+          }
+        if (prm.discretization.hourglass_coefficient > 0.)
+          families->set_stabilisation(hourglass_stabilisation());
+        family_group = std::move(families);
+      }
     assembler = std::make_unique<Assembler<dim>>(
       zero_constraints,
       std::vector<ElementGroup<dim> *>{q1_cells.get(), family_group.get()});
@@ -172,6 +190,36 @@ namespace pg
 
 
   template <int dim>
+  U1Stabilisation<dim>
+  DiscreteSystem<dim>::hourglass_stabilisation() const
+  {
+    // Peridigm's constant with the 3-D bulk modulus and the horizon of
+    // each family (the longest bond with 'Nearest neighbours')
+    const auto  &d = prm.discretization;
+    const double K = prm.material.lambda() + 2. / 3. * prm.material.mu();
+    U1Stabilisation<dim> stabilisation;
+    for (const unsigned int k : discretization.owned_families)
+      {
+        double horizon =
+          d.horizon_factor * discretization.particles.spacing(k) + d.horizon;
+        if (d.nearest_neighbours > 0)
+          {
+            horizon = 0;
+            for (const unsigned int j : discretization.families.members(k))
+              horizon = std::max(horizon,
+                                 (discretization.particles.position(j) -
+                                  discretization.particles.position(k))
+                                   .norm());
+          }
+        stabilisation.hourglass_constants.push_back(
+          hourglass_constant(d.hourglass_coefficient, K, horizon));
+      }
+    return stabilisation;
+  }
+
+
+
+  template <int dim>
   void
   DiscreteSystem<dim>::make_constraints(AffineConstraints<double> &c,
                                         const bool homogeneous) const
@@ -189,9 +237,15 @@ namespace pg
   void
   DiscreteSystem<dim>::compute_unit_stress_residual()
   {
-    particle_loads.compute_unit_stress_residual(discretization.families,
-                                                discretization.family_tables,
-                                                comm);
+    // U1SUnl: the loads of the Unl tables (the U1 tables share their
+    // surface area vectors after VC; without VC the families equal Unl
+    // for nu <= 0.49)
+    particle_loads.compute_unit_stress_residual(
+      discretization.families,
+      discretization.stabilisation_tables.empty() ?
+        discretization.family_tables :
+        discretization.stabilisation_tables,
+      comm);
     summary.max_interior_unit_stress_residual =
       particle_loads.max_interior_unit_stress_residual();
   }
@@ -203,10 +257,47 @@ namespace pg
   DiscreteSystem<dim>::correct_variational_consistency()
   {
     if (!correction_system)
-      correction_system =
-        std::make_unique<CorrectionSystem<dim>>(formulation,
-                                                comm,
-                                                prm.linear_solver.vc_solver);
+      correction_system = std::make_unique<CorrectionSystem<dim>>(
+        formulation.underintegrated_part(),
+        comm,
+        prm.linear_solver.vc_solver);
+    if (discretization.stabilisation_elements)
+      {
+        // U1SUnl (section 12.3.2: "VC must be performed twice"): first the
+        // Unl tables of the stabilisation, with the code's boundary
+        // option; then the U1 tables with the surface area vectors of the
+        // corrected Unl tables as targets, so that a homogeneous stress
+        // gives both the same nodal forces and the loads balance the
+        // family (eq. 6.18) whatever the pseudo-material.
+        if (!stabilisation_correction_system)
+          stabilisation_correction_system =
+            std::make_unique<CorrectionSystem<dim>>(
+              formulation.stabilisation_part(),
+              comm,
+              prm.linear_solver.vc_solver);
+        correct_family_tables(*stabilisation_correction_system,
+                              discretization.particles,
+                              discretization.families,
+                              *discretization.stabilisation_elements,
+                              discretization.owned_families,
+                              discretization.owned_dofs,
+                              particle_loads.unit_stress(),
+                              discretization.stabilisation_tables);
+        correction_system->set_prescribed_targets(
+          unit_stress_residual(discretization.families,
+                               discretization.owned_families,
+                               discretization.stabilisation_tables,
+                               discretization.particles.n_particles(),
+                               comm));
+      }
+    const std::vector<Tensor<1, dim>> u1_unit_stress =
+      discretization.stabilisation_elements ?
+        unit_stress_residual(discretization.families,
+                             discretization.owned_families,
+                             discretization.family_tables,
+                             discretization.particles.n_particles(),
+                             comm) :
+        std::vector<Tensor<1, dim>>();
     const CorrectionFactors<dim> factors =
       correct_family_tables(*correction_system,
                             discretization.particles,
@@ -214,7 +305,9 @@ namespace pg
                             *discretization.family_elements,
                             discretization.owned_families,
                             discretization.owned_dofs,
-                            particle_loads.unit_stress(),
+                            discretization.stabilisation_elements ?
+                              u1_unit_stress :
+                              particle_loads.unit_stress(),
                             discretization.family_tables);
     if (formulation.second_order_consistency)
       summary.max_interior_second_order_residual =
@@ -229,6 +322,14 @@ namespace pg
         summary.vc_iterations = factors.solver_iterations;
       }
     compute_unit_stress_residual();
+    // a solve that "succeeded" on a singular system leaves d^k != 0
+    AssertThrow(summary.max_interior_unit_stress_residual < 1e-8,
+                ExcMessage("The VC correction failed: after it the interior "
+                           "unit-stress residual is max |d^k| / h^(dim-1) = " +
+                           Utilities::to_string(
+                             summary.max_interior_unit_stress_residual) +
+                           " (round-off expected). " +
+                           CorrectionSystem<dim>::failure_advice(formulation)));
   }
 
 

@@ -47,7 +47,15 @@ main()
                                  "FEM Q1",
                                  "FEM H1",
                                  "FEM Q1P0",
-                                 "FEM H1P0"})
+                                 "FEM H1P0",
+                                 "VCPBG U1SUnl",
+                                 "PBG U1SUnl noBC",
+                                 "VCPBG V3s U1SUnl",
+                                 "VCPPG V2sn Unl",
+                                 "VCPPG V2sn UnlP0",
+                                 "VCPBG U2",
+                                 "VCPPG U2",
+                                 "VC2PPG V4s U2"})
     {
       const FormulationCode f     = parse_formulation_code(code);
       const FormulationCode again = parse_formulation_code(f.text);
@@ -66,24 +74,14 @@ main()
     }
 
   deallog << "Refused:" << std::endl;
-  for (const std::string code : {"BCPBG U1",
-                                 "BCPBG U2",
-                                 "BCPBG Unl noBC",
-                                 "PBG Unl noBC noBC",
-                                 "BCBCPBG Unl",
-                                 "VCPBG V2sn Unl",
-                                 "PBG V5sn Unl",
-                                 "VC2PPG V1sn U2",
-                                 "PPG U1",
-                                 "VCPPG Unl UL",
-                                 "PBG Unl U2",
-                                 "XPBG Unl",
-                                 "VCPPG2 V3sn UnlP0",
-                                 "PBG UnlP0 Unl",
-                                 "PBG IUnlP0",
-                                 "PBG U2P1",
-                                 "FEM Q2",
-                                 "FEM Q1P0 H1P0"})
+  for (const std::string code :
+       {"BCPBG U1",          "BCPBG U2",       "BCPBG Unl noBC",
+        "PBG Unl noBC noBC", "BCBCPBG Unl",    "VCPBG V2sn Unl",
+        "PBG V5sn Unl",      "VC2PPG V1sn U2", "PPG U1",
+        "VCPPG Unl UL",      "PBG Unl U2",     "XPBG Unl",
+        "VCPPG2 V3sn UnlP0", "PBG UnlP0 Unl",  "PBG IUnlP0",
+        "PBG U2P1",          "FEM Q2",         "FEM Q1P0 H1P0",
+        "VCPPG U1SUnl",      "PBG U1SIG",      "VC2PPG V2s U2"})
     try
       {
         parse_formulation_code(code);

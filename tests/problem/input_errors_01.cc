@@ -67,6 +67,10 @@ main(int argc, char **argv)
         "subsection Discretization\n"
         "  set Formulation = FEM Q1P0\nend\n"
         "subsection Material\n  set Plane = stress\nend\n");
+  check("hourglass coefficient on a formulation that is not U1",
+        "subsection Discretization\n"
+        "  set Formulation = VCPBG Unl\n"
+        "  set Hourglass coefficient = 0.02\nend\n");
   check("correction function without VC",
         "subsection Discretization\n  set Formulation = PPG V3sn Unl\nend\n");
   check("contradictory formulation",

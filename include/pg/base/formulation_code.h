@@ -12,9 +12,9 @@ namespace pg
    * "VCPBG Unl", parsed into its parts (architecture.md section 5) with the
    * table's defaults: BC for every first-order formulation (Unl; U1 has no
    * bond to correct, U2 is second order), V3 for PPG, V5 for PBG, the
-   * boundary option sn, TL. "noBC" switches the bond correction off. Parts
-   * that are not built yet (V2, V4, the mixed formulations other than
-   * UnlP0 and Q1P0/H1P0, UL) are rejected with a "not yet available" message,
+   * boundary option sn, TL. "noBC" switches the bond correction
+   * off. Parts that are not built yet (the mixed formulations other than
+   * UnlP0 and Q1P0/H1P0, U1SIG, UL) are rejected with a "not yet available" message,
    * never ignored. The readings where the table is silent are in
    * doc/ambiguities.md.
    */
@@ -35,7 +35,14 @@ namespace pg
     {
       unl, //!< every family member (PBG) or every bond (PPG)
       u1,  //!< the master only (underintegrated PBG = classical correspondence)
-      u2   //!< every member, quadratic WTE2 shape functions (section 6.5)
+      u2,  //!< every member, quadratic WTE2 shape functions (section 6.5)
+      /**
+       * U1SUnl (eqs. 6.18-6.20, pg-methods.md section 12.3.2): the real
+       * material at the master (U1) plus a pseudo-material with nu <= 0.49
+       * on every member (Unl) minus the same pseudo-material at the master
+       * (PBG only)
+       */
+      u1s_unl
     };
 
     /**
@@ -57,7 +64,9 @@ namespace pg
     enum class CorrectionFunction
     {
       v1, //!< constant, eq. (5.60)
+      v2, //!< diagonal WLS2 second derivatives, eq. (5.61)
       v3, //!< MLS1 value at the master minus delta, eq. (5.62)
+      v4, //!< WLS2 value at the master minus delta, eq. (5.63)
       v5  //!< V3 with the bond projector, eq. (5.64)
     };
 
@@ -114,6 +123,18 @@ namespace pg
     /** "PBG", "PPG", "PPG2", "CPD" or "FEM". */
     std::string
     method_name() const;
+
+    /**
+     * The two formulations U1SUnl is made of: its underintegrated part
+     * (this code with U1 and without BC: the real material at the master)
+     * and its stabilisation (this code with Unl: the pseudo-energy on every
+     * member). Each has its own VC correction (section 12.3.2: "VC must be
+     * performed twice"). For the other codes both return this code.
+     */
+    FormulationCode
+    underintegrated_part() const;
+    FormulationCode
+    stabilisation_part() const;
   };
 
   /**

@@ -99,6 +99,14 @@ namespace pg
     /** The masters of the families this rank owns, and their tables. */
     std::vector<unsigned int>         owned_families;
     std::vector<QuadratureTable<dim>> family_tables;
+    /**
+     * U1SUnl only (else empty): the elements and tables of the
+     * stabilisation (FormulationCode::stabilisation_part(), Unl on every
+     * member); family_elements and family_tables are then its
+     * underintegrated part (U1).
+     */
+    std::unique_ptr<FamilyElements<dim>> stabilisation_elements;
+    std::vector<QuadratureTable<dim>>    stabilisation_tables;
     /** The finite element (Q1) cells this rank owns. */
     std::vector<CellIterator> owned_fe_cells;
     /** Meshfree cells loaded by FE-consistent face tractions ('geometry'). */

@@ -33,7 +33,8 @@ namespace pg
     double max_second_order_residual = 0;
     /**
      * How the system was solved: "iterative", "direct", "direct (singular
-     * system)" or "direct (fallback)" (GMRES did not converge).
+     * system)", "direct (V2: zero diagonal)" or "direct (fallback)" (GMRES
+     * did not converge).
      */
     std::string solver;
     /** GMRES iterations of the iterative solve (0 if solved directly). */
@@ -117,6 +118,25 @@ namespace pg
     CorrectionFactors<dim>
     solve(const std::vector<Tensor<1, dim>> &unit_stress);
 
+    /**
+     * Make every surface particle k a row d^k(alpha) = @p targets[k]
+     * (n_particles values), with the factors fixed at d + 1 particles as
+     * for option p: call before reinit(). The targets must obey the
+     * discrete Gauss identities (they do if they are the unit-stress
+     * residual of other corrected tables). U1SUnl corrects its U1 tables
+     * so that their surface area vectors are those of its corrected Unl
+     * tables, and the loads balance both.
+     */
+    void
+    set_prescribed_targets(const std::vector<Tensor<1, dim>> &targets);
+
+    /**
+     * What to change when the VC system of @p formulation cannot be solved
+     * (the end of the error message).
+     */
+    static std::string
+    failure_advice(const FormulationCode &formulation);
+
     /** The system matrix of the last reinit() (not for VC2). */
     const LinearAlgebra::SparseMatrix &
     system_matrix() const;
@@ -148,9 +168,11 @@ namespace pg
     void
     assemble_matrix();
 
-    const FormulationCode formulation;
-    const MPI_Comm        comm;
-    const std::string     solver;
+    FormulationCode formulation;
+    const MPI_Comm  comm;
+    /** set_prescribed_targets(); empty: the targets of the option. */
+    std::vector<Tensor<1, dim>> prescribed_targets;
+    const std::string           solver;
 
     const ParticleSet<dim>    *particles = nullptr;
     const FamilySet<dim>      *families  = nullptr;

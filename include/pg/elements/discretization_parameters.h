@@ -32,6 +32,11 @@ namespace pg
       unsigned int nearest_neighbours;
       /** omega = |dX|^(-2n). */
       double weight_exponent;
+      /**
+       * Peridigm's hourglass coefficient alpha of the U1 families (0: no
+       * hourglass force), elements/u1_stabilisation.h.
+       */
+      double hourglass_coefficient = 0;
 
       static void
       declare_parameters(ParameterHandler &prm);

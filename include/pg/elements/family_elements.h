@@ -128,9 +128,11 @@ namespace pg
 
     /**
      * The effective correction function values phi^{ka} of family @p k,
-     * one per member (V1, V3 or V5 before the projector). Needs VC.
+     * one per member (before the V5 projector), component d for the
+     * correction in direction d (equal components except for V2). Needs
+     * VC.
      */
-    const std::vector<double> &
+    const std::vector<Tensor<1, dim>> &
     correction_function_values(const unsigned int k) const;
 
     /** The bonds and volumes of family @p k. */
@@ -159,10 +161,30 @@ namespace pg
                const unsigned int                         point,
                const unsigned int                         a) const;
 
+    /** The diagonal matrix with the entries @p v. */
+    static Tensor<2, dim>
+    diagonal(const Tensor<1, dim> &v)
+    {
+      Tensor<2, dim> D;
+      for (unsigned int d = 0; d < dim; ++d)
+        D[d][d] = v[d];
+      return D;
+    }
+
     /** The bond projector 1 - n (x) n of V5 at @p point (1 otherwise). */
     Tensor<2, dim>
     projector(const ShapeFunctions::FamilyGeometry<dim> &geometry,
               const unsigned int                         point) const;
+
+    /**
+     * The correction function values of family @p k into @p values, with
+     * the conditioning check of the V2/V4 fit (throws ExcSingularFamily).
+     */
+    void
+    checked_correction_function(
+      const unsigned int                         k,
+      const ShapeFunctions::FamilyGeometry<dim> &geometry,
+      std::vector<Tensor<1, dim>>               &values) const;
 
     /** Raw gradients at @p point with the conditioning check. */
     void
@@ -181,7 +203,7 @@ namespace pg
     /** Test gradients at the master (PPG): the trial ones, VC-corrected. */
     std::vector<std::vector<Tensor<1, dim>>> master_test;
     /** Effective VC correction function values per family member. */
-    std::vector<std::vector<double>> phi;
+    std::vector<std::vector<Tensor<1, dim>>> phi;
     /** VC correction factors per particle; empty: uncorrected. */
     std::vector<Tensor<1, dim>> alpha;
   };
@@ -217,10 +239,9 @@ namespace pg
             weighted_projector += w * projector(geom, q);
           }
         for (unsigned int a = 0; a < n; ++a)
-          add(members[a], k, phi[k][a] * weighted_projector);
+          add(members[a], k, diagonal(phi[k][a]) * weighted_projector);
         return;
       }
-    const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();
     for (unsigned int j = 1; j < n; ++j)
       {
         const double w = geom.volumes[j];
@@ -230,16 +251,17 @@ namespace pg
             const auto family_j = families.members(members[j]);
             const auto found =
               std::lower_bound(family_j.begin() + 1, family_j.end(), k);
-            const double c = w * phi[members[j]][found - family_j.begin()];
-            add(k, members[j], c * identity);
-            add(members[j], members[j], -c * identity);
+            const Tensor<2, dim> c =
+              w * diagonal(phi[members[j]][found - family_j.begin()]);
+            add(k, members[j], c);
+            add(members[j], members[j], -c);
           }
         else
           {
             // test vectors +-(g^{kkj} + phi^{kj} alpha^k) at nodes j and k
-            const double c = w * phi[k][j];
-            add(members[j], k, c * identity);
-            add(k, k, -c * identity);
+            const Tensor<2, dim> c = w * diagonal(phi[k][j]);
+            add(members[j], k, c);
+            add(k, k, -c);
           }
       }
   }

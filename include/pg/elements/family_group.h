@@ -60,6 +60,36 @@ namespace pg
 
 
   /**
+   * A stabilisation of the underintegrated families (U1, one point at the
+   * master; elements/u1_stabilisation.h), at most one of:
+   * - U1SUnl (eq. 6.18, pg-methods.md section 12.3.2): family k adds the
+   *   pseudo-material W~ (constants of eq. 6.20) on the Unl table of its
+   *   members and subtracts it at its master;
+   * - Peridigm's hourglass force ('Hourglass coefficient' > 0).
+   */
+  template <int dim>
+  struct U1Stabilisation
+  {
+    /** U1SUnl: the Unl tables (Discretization::stabilisation_tables). */
+    const std::vector<QuadratureTable<dim>> *tables = nullptr;
+    /** U1SUnl: W~, with E~ = E (no plasticity yet), nu~ = min(0.49, nu). */
+    const Materials::Material<dim> *pseudo_material = nullptr;
+    /**
+     * U1SUnl: false if W~ = W (nu <= 0.49); then the master terms cancel
+     * exactly and the family is the Unl family of the real material, which
+     * is assembled alone.
+     */
+    bool master_terms = true;
+    /**
+     * Hourglass: the constant 18 alpha K / (pi delta^4) of every owned
+     * family (hourglass_constant()); empty: no hourglass force.
+     */
+    std::vector<double> hourglass_constants;
+  };
+
+
+
+  /**
    * The PG families (PPG, PBG, VC, BC ...: whatever the family tables
    * hold): the common kernel on each family's quadrature table. With a
    * @p condensed_pressure material the families are UnlP0 (eq. 6.9):
@@ -80,6 +110,14 @@ namespace pg
       const Materials::VolumetricSplit<dim>   *condensed_pressure = nullptr,
       const FamilyElements<dim>               *family_elements    = nullptr);
 
+    /**
+     * Stabilise the families, whose tables (given to the constructor) are
+     * U1: @p stabilisation adds the U1SUnl pseudo-energy (the material
+     * must then be stateless) or the hourglass force.
+     */
+    void
+    set_stabilisation(const U1Stabilisation<dim> &stabilisation);
+
     std::string
     name() const override;
 
@@ -98,6 +136,7 @@ namespace pg
 
   private:
     const std::vector<QuadratureTable<dim>> &family_tables;
+    U1Stabilisation<dim>                     stabilisation;
     const Materials::Material<dim>          &material;
     const Materials::VolumetricSplit<dim>   *condensed_pressure;
     /** For the master tables of PPG UnlP0; nullptr otherwise. */

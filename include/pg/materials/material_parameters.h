@@ -60,6 +60,14 @@ namespace pg
       mu() const;
 
       /**
+       * The same material with Poisson's ratio @p nu and the same Young's
+       * modulus (K and mu recomputed from them if they were given): the
+       * pseudo-material of U1SUnl, eq. (6.20).
+       */
+      Material
+      with_poissons_ratio(const double nu) const;
+
+      /**
        * The entry @p name of model_entries as a number; throws with a clear
        * message if it is missing or not a number.
        */

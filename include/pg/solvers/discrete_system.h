@@ -11,6 +11,7 @@
 #include <pg/dofs/discretization.h>
 #include <pg/elements/correction_system.h>
 #include <pg/elements/element_group.h>
+#include <pg/elements/family_group.h>
 #include <pg/elements/q1_cell_group.h>
 #include <pg/history/quadrature_point_history.h>
 #include <pg/materials/material.h>
@@ -253,6 +254,13 @@ namespace pg
     std::string
     reduced_failure() const;
 
+    /**
+     * The hourglass force of 'Discretization/Hourglass coefficient' on the
+     * owned families (U1).
+     */
+    U1Stabilisation<dim>
+    hourglass_stabilisation() const;
+
     /** @p target += @p factor C^T y with C of zero_constraints. */
     void
     add_condensed(const LinearAlgebra::Vector &y,
@@ -281,6 +289,12 @@ namespace pg
 
     /** The VC system, with its own matrix (VC codes only). */
     std::unique_ptr<CorrectionSystem<dim>> correction_system;
+    /**
+     * U1SUnl only: the VC system of the stabilisation tables (Unl) and the
+     * pseudo-material W~ of eq. (6.20).
+     */
+    std::unique_ptr<CorrectionSystem<dim>>    stabilisation_correction_system;
+    std::unique_ptr<Materials::Material<dim>> pseudo_material;
 
     /** The dead loads of 'Boundary conditions' and the body force. */
     const Loads<dim> loads;
