@@ -1,6 +1,7 @@
 #!/bin/sh
 # Peridigm's tensile test (prm/tensile_test.prm) with FEM, BCPBG Unl and
-# VCBCPBG V5sn Unl (cg), on the merged mesh and on the mesh as it comes from
+# VCBCPBG V5sn Unl (cg) and Peridigm's model, PBG U1 with the hourglass
+# force 0.02 (gmres), on the merged mesh and on the mesh as it comes from
 # Cubit (252 coincident node pairs, merged on reading). Prints the markdown
 # table of doc/benchmarks/tensile_test.md: wall time of the whole run, the
 # displacement at the gauge point (0.0317, 1.238, 0) and the reaction u_y
@@ -16,15 +17,31 @@ WORK=$(mktemp -d)
 mkdir -p "$OUT"
 echo "| mesh | formulation | wall time (s) | Newton its | gauge u_x | gauge u_y | gauge u_z | reaction grip y<0 | reaction grip y>0 |"
 echo "|---|---|---|---|---|---|---|---|---|"
-for mesh in tensile_test tensile_test_unmerged; do
-  for formulation in "FEM" "BCPBG Unl" "VCBCPBG V5sn Unl"; do
+# MESHES="tensile_test" or FORMULATIONS="..." run a subset.
+for mesh in ${MESHES:-tensile_test tensile_test_unmerged}; do
+  for formulation in ${FORMULATIONS:-FEM BCPBG_Unl VCBCPBG_V5sn_Unl PBG_U1_hourglass}; do
+    formulation=$(echo "$formulation" | tr '_' ' ')
     name=$(echo "${mesh}_$formulation" | tr ' ' '_')
+    # Peridigm's own model: the classical correspondence with its hourglass
+    # force (coefficient 0.02, its deformation gradient with omega = 1);
+    # the tangent is not symmetric, so GMRES
+    extra=""
+    code="$formulation"
+    if [ "$formulation" = "PBG U1 hourglass" ]; then
+      code="PBG U1"
+      extra="  set Hourglass coefficient = 0.02
+  set Weight exponent = 0
+end
+subsection Linear solver
+  set Type = gmres"
+    fi
     cat prm/tensile_test.prm - > "$WORK/$name.prm" <<END
 subsection Geometry
   set File name = $DATA/$mesh.msh
 end
 subsection Discretization
-  set Formulation = $formulation
+  set Formulation = $code
+$extra
 end
 subsection Output
   set Directory = $WORK/$name
