@@ -52,6 +52,20 @@ struct ParticleFixture
     return best;
   }
 
+  /**
+   * Two masters for element tests: the particle nearest the centre of the
+   * unit box (an interior family) and the one at the origin (a corner
+   * family).
+   */
+  std::vector<unsigned int>
+  interior_and_corner() const
+  {
+    dealii::Point<dim> centre;
+    for (unsigned int d = 0; d < dim; ++d)
+      centre[d] = 0.5;
+    return {closest(centre), closest(dealii::Point<dim>())};
+  }
+
   dealii::Triangulation<dim> tria;
   dealii::FESystem<dim>      fe;
   dealii::DoFHandler<dim>    dof_handler;

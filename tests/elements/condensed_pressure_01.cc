@@ -191,11 +191,7 @@ test()
                                      dim == 2 ? 2.51 : 2.01);
   const double                    h = 1. / (dim == 2 ? 6 : 4);
   std::mt19937                    rng(7);
-  const std::vector<unsigned int> masters = {
-    fixture.closest(Point<dim>() + 0.5 * Point<dim>::unit_vector(0) +
-                    0.5 * Point<dim>::unit_vector(1) +
-                    (dim == 3 ? 0.5 : 0.) * Point<dim>::unit_vector(dim - 1)),
-    fixture.closest(Point<dim>())};
+  const std::vector<unsigned int> masters = fixture.interior_and_corner();
 
   const auto report = [&](const std::string &name, const Errors &worst) {
     const auto verdict = [](const double v, const double bound) {

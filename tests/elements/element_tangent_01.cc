@@ -97,11 +97,7 @@ test()
   std::vector<std::unique_ptr<Materials::Material<dim>>> materials;
   for (const auto &m : models)
     materials.push_back(make_material<dim>(m));
-  const std::vector<unsigned int> masters = {
-    fixture.closest(Point<dim>() + 0.5 * Point<dim>::unit_vector(0) +
-                    0.5 * Point<dim>::unit_vector(1) +
-                    (dim == 3 ? 0.5 : 0.) * Point<dim>::unit_vector(dim - 1)),
-    fixture.closest(Point<dim>())};
+  const std::vector<unsigned int> masters = fixture.interior_and_corner();
 
   const auto report = [&](const std::string           &name,
                           const std::array<double, 3> &worst) {

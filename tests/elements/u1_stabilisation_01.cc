@@ -140,12 +140,7 @@ test()
   double u1s_tangent = 0, u1s_rigid = 0, u1s_equal_unl = 0;
   double hg_peridigm = 0, hg_tangent = 0, hg_affine = 0, hg_sum = 0;
   double hg_asymmetry = 1;
-  for (const unsigned int k :
-       {fixture.closest(Point<dim>() + 0.5 * Point<dim>::unit_vector(0) +
-                        0.5 * Point<dim>::unit_vector(1) +
-                        (dim == 3 ? 0.5 : 0.) *
-                          Point<dim>::unit_vector(dim - 1)),
-        fixture.closest(Point<dim>())})
+  for (const unsigned int k : fixture.interior_and_corner())
     {
       QuadratureTable<dim> u1_table, unl_table;
       u1_elements.build(k, u1_table);
