@@ -7,6 +7,7 @@
 #include <pg/base/exceptions.h>
 #include <pg/base/formulation_code.h>
 #include <pg/base/interruption.h>
+#include <pg/base/parameter_file.h>
 #include <pg/dofs/discretization.h>
 #include <pg/materials/material.h>
 #include <pg/postprocess/output.h>
@@ -669,7 +670,7 @@ namespace pg
     {
       ParameterHandler prm;
       declare_all_parameters<dim>(prm);
-      prm.parse_input(filename);
+      Parameters::parse_parameter_file(prm, filename);
       Parameters::AllParameters<dim> parameters;
       parameters.parse_parameters(prm);
       Problem<dim> problem(parameters, comm, out, restart);

@@ -9,6 +9,7 @@
 //   pg_solve --help
 
 #include <pg/base/application.h>
+#include <pg/base/parameter_file.h>
 #include <pg/base/parameters.h>
 #include <pg/problem.h>
 
@@ -45,7 +46,7 @@ main(int argc, char *argv[])
             pg::declare_all_parameters<2>(prm);
           else
             pg::declare_all_parameters<3>(prm);
-          prm.parse_input(args[1]);
+          pg::Parameters::parse_parameter_file(prm, args[1]);
           if (root)
             std::cout << args[1] << ": valid" << std::endl;
           return 0;
