@@ -1,6 +1,7 @@
 #include <pg/analysis/study.h>
 #include <pg/analysis/study_report.h>
 #include <pg/base/exceptions.h>
+#include <pg/base/parameter_file.h>
 #include <pg/base/parameters.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -204,8 +205,8 @@ namespace pg
           Study::Parameters::declare_parameters(prm);
           if (const std::string problem = problem_file(filename);
               !problem.empty())
-            prm.parse_input(problem);
-          prm.parse_input(filename);
+            pg::Parameters::parse_parameter_file(prm, problem);
+          pg::Parameters::parse_parameter_file(prm, filename);
           Study::Parameters study;
           study.parse_parameters(prm);
           const bool         root = Utilities::MPI::this_mpi_process(comm) == 0;
