@@ -14,8 +14,8 @@ namespace pg
    * bond to correct, U2 is second order), V3 for PPG, V5 for PBG, the
    * boundary option sn, TL. "noBC" switches the bond correction
    * off. Parts that are not built yet (the mixed formulations other than
-   * UnlP0 and Q1P0/H1P0, U1SIG, UL) are rejected with a "not yet available" message,
-   * never ignored. The readings where the table is silent are in
+   * UnlP0 and Q1P0/H1P0, U1SIG, UL) are rejected with a "not yet available"
+   * message, never ignored. The readings where the table is silent are in
    * doc/ambiguities.md.
    */
   struct FormulationCode
