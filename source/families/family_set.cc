@@ -24,6 +24,10 @@ namespace pg
     const auto tree = pack_rtree_of_indices(points);
 
     std::vector<std::vector<unsigned int>> neighbours(n);
+    // delta^k; with nearest neighbours the longest bond, set below
+    horizons.resize(n);
+    for (unsigned int k = 0; k < n; ++k)
+      horizons[k] = horizon_factor * particles.spacing(k) + horizon;
     for (unsigned int k = 0; k < n; ++k)
       {
         const Point<dim>         &x = points[k];
@@ -33,9 +37,8 @@ namespace pg
                      std::back_inserter(found));
         else
           {
-            const double delta =
-              horizon_factor * particles.spacing(k) + horizon;
-            Point<dim> lower = x, upper = x;
+            const double delta = horizons[k];
+            Point<dim>   lower = x, upper = x;
             for (unsigned int d = 0; d < dim; ++d)
               {
                 lower[d] -= delta;
@@ -67,7 +70,24 @@ namespace pg
         indices.push_back(k);
         indices.insert(indices.end(), h.begin(), h.end());
         offsets.push_back(indices.size());
+        if (nearest_neighbours > 0)
+          {
+            horizons[k] = 0;
+            for (const unsigned int j : h)
+              horizons[k] =
+                std::max(horizons[k], points[k].distance(points[j]));
+          }
       }
+  }
+
+
+
+  template <int dim>
+  double
+  FamilySet<dim>::horizon(const unsigned int k) const
+  {
+    AssertIndexRange(k, horizons.size());
+    return horizons[k];
   }
 
 

@@ -194,26 +194,14 @@ namespace pg
   DiscreteSystem<dim>::hourglass_stabilisation() const
   {
     // Peridigm's constant with the 3-D bulk modulus and the horizon of
-    // each family (the longest bond with 'Nearest neighbours')
-    const auto  &d = prm.discretization;
+    // each family
     const double K = prm.material.lambda() + 2. / 3. * prm.material.mu();
     U1Stabilisation<dim> stabilisation;
     for (const unsigned int k : discretization.owned_families)
-      {
-        double horizon =
-          d.horizon_factor * discretization.particles.spacing(k) + d.horizon;
-        if (d.nearest_neighbours > 0)
-          {
-            horizon = 0;
-            for (const unsigned int j : discretization.families.members(k))
-              horizon = std::max(horizon,
-                                 (discretization.particles.position(j) -
-                                  discretization.particles.position(k))
-                                   .norm());
-          }
-        stabilisation.hourglass_constants.push_back(
-          hourglass_constant(d.hourglass_coefficient, K, horizon));
-      }
+      stabilisation.hourglass_constants.push_back(
+        hourglass_constant(prm.discretization.hourglass_coefficient,
+                           K,
+                           discretization.families.horizon(k)));
     return stabilisation;
   }
 

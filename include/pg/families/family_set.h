@@ -44,6 +44,13 @@ namespace pg
     unsigned int
     n_neighbours(const unsigned int k) const;
 
+    /**
+     * The horizon delta^k of family k (length): horizon_factor x spacing(k)
+     * + horizon, or with 'Nearest neighbours' its longest bond.
+     */
+    double
+    horizon(const unsigned int k) const;
+
     /** Total number of (master, neighbour) bonds. */
     std::size_t
     n_bonds() const;
@@ -51,6 +58,7 @@ namespace pg
   private:
     std::vector<std::size_t>  offsets;
     std::vector<unsigned int> indices;
+    std::vector<double>       horizons;
   };
 } // namespace pg
 
