@@ -13,7 +13,8 @@ namespace pg
       "the VC correction function V1 ... V5 (default V3 for PPG, V5 for "
       "PBG, V1 for VC2) and its boundary option <b> = p, s or sn (default "
       "sn; VC2 takes s), and <points> = Unl (default), U1 (PBG only), U2, "
-      "UnlP0 (mixed, PBG or PPG) or U1SUnl (stabilised U1, PBG only). "
+      "UnlP0 (mixed, PBG or PPG), U2P1 (mixed, PBG only) or U1SUnl "
+      "(stabilised U1, PBG only). "
       "The bond correction BC is the default of Unl; 'noBC' switches it "
       "off. E.g. 'VCPPG V3sn Unl' (= 'VCBCPPG V3sn Unl TL'), 'VCPBG Unl' "
       "(= 'VCBCPBG V5sn Unl TL'), 'PBG Unl noBC', 'PBG U1', "
@@ -78,11 +79,12 @@ namespace pg
                                               "sn");
         }
       using Points = FormulationCode::Points;
-      text += (p0                         ? " UnlP0" :
-               code.points == Points::unl ? " Unl" :
-               code.points == Points::u1  ? " U1" :
-               code.points == Points::u2  ? " U2" :
-                                            " U1SUnl");
+      text += (p0                                                   ? " UnlP0" :
+               code.fields == FormulationCode::Fields::condensed_p1 ? " U2P1" :
+               code.points == Points::unl                           ? " Unl" :
+               code.points == Points::u1                            ? " U1" :
+               code.points == Points::u2                            ? " U2" :
+                                                                      " U1SUnl");
       if ((code.points == Points::unl || code.points == Points::u1s_unl) &&
           !code.bond_correction)
         text += " noBC";
@@ -251,17 +253,20 @@ namespace pg
       {
         const std::string &w = words[i];
         if (w == "Unl" || w == "U1" || w == "U2" || w == "UnlP0" ||
-            w == "U1SUnl")
+            w == "U2P1" || w == "U1SUnl")
           {
             if (have_points)
               reject(code, "it names two formulations.");
-            have_points   = true;
-            result.points = (w == "U1"     ? FormulationCode::Points::u1 :
-                             w == "U2"     ? FormulationCode::Points::u2 :
-                             w == "U1SUnl" ? FormulationCode::Points::u1s_unl :
-                                             FormulationCode::Points::unl);
+            have_points = true;
+            result.points =
+              (w == "U1"                  ? FormulationCode::Points::u1 :
+               (w == "U2" || w == "U2P1") ? FormulationCode::Points::u2 :
+               w == "U1SUnl"              ? FormulationCode::Points::u1s_unl :
+                                            FormulationCode::Points::unl);
             if (w == "UnlP0")
               result.fields = FormulationCode::Fields::condensed_p0;
+            if (w == "U2P1")
+              result.fields = FormulationCode::Fields::condensed_p1;
           }
         else if (w == "noBC")
           {
@@ -304,8 +309,8 @@ namespace pg
                      "the VC boundary option <" + option +
                        "> is unknown; use p, s or sn.");
           }
-        else if (w == "IUnlP0" || w == "U2P1" || w == "U2P1C" ||
-                 w == "Unl+P1C" || w == "U1SIG")
+        else if (w == "IUnlP0" || w == "U2P1C" || w == "Unl+P1C" ||
+                 w == "U1SIG")
           reject(code, "the formulation <" + w + "> is not yet available.");
         else
           reject(code, "the part <" + w + "> is unknown.");
@@ -357,6 +362,14 @@ namespace pg
              "6.7): its volumetric point at the master has the test "
              "functions of PPG1, whose VC condition PPG2 does not satisfy. "
              "Write 'VCPPG V3sn UnlP0' or 'VCPBG V5sn UnlP0'.");
+    if (result.fields == FormulationCode::Fields::condensed_p1 &&
+        result.method != FormulationCode::Method::pbg)
+      reject(code,
+             "U2P1 (eq. 6.10) has p and Theta linear per family, fitted to "
+             "J at every member; a Petrov-Galerkin family has its "
+             "volumetric point at the master only, where a linear field "
+             "is undetermined. U2P1 is a PBG formulation: write 'VCPBG "
+             "U2P1'.");
     if (result.points == FormulationCode::Points::u1 &&
         result.method != FormulationCode::Method::pbg)
       reject(code,

@@ -341,7 +341,7 @@ namespace pg
                       "correspondence) or set the coefficient to 0; "
                       "'VCPBG U1SUnl' is the dissertation's stabilised "
                       "U1."));
-      if (code.fields == FormulationCode::Fields::condensed_p0)
+      if (code.condensed_fields())
         {
           AssertThrow(material.model == "isochoric-volumetric neo-Hooke" ||
                         material.model == "linear elastic",

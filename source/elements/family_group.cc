@@ -127,13 +127,18 @@ namespace pg
     const std::vector<QuadratureTable<dim>> &family_tables,
     const Materials::Material<dim>          &material,
     const Materials::VolumetricSplit<dim>   *condensed_pressure,
-    const FamilyElements<dim>               *family_elements)
+    const FamilyElements<dim>               *family_elements,
+    const unsigned int                       condensed_pressure_degree)
     : FamilyGroupBase<dim>(owned_families, families, particles)
     , family_tables(family_tables)
     , material(material)
     , condensed_pressure(condensed_pressure)
     , family_elements(family_elements)
-  {}
+    , condensed_pressure_degree(condensed_pressure_degree)
+  {
+    Assert(condensed_pressure_degree == 0 || family_elements == nullptr,
+           ExcInternalError());
+  }
 
 
 
@@ -160,7 +165,9 @@ namespace pg
   std::string
   FamilyGroup<dim>::name() const
   {
-    return condensed_pressure != nullptr   ? "PG families (UnlP0)" :
+    return condensed_pressure != nullptr ?
+             (condensed_pressure_degree == 1 ? "PG families (U2P1)" :
+                                               "PG families (UnlP0)") :
            stabilisation.tables != nullptr ? "PG families (U1SUnl)" :
            !stabilisation.hourglass_constants.empty() ?
                                              "PG families (U1, hourglass)" :
@@ -230,7 +237,8 @@ namespace pg
           scratch.y,
           *condensed_pressure,
           local.residual,
-          local.with_matrix ? &local.matrix : nullptr);
+          local.with_matrix ? &local.matrix : nullptr,
+          condensed_pressure_degree);
         return;
       }
     assemble_element(family_tables[e],

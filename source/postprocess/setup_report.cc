@@ -39,18 +39,21 @@ namespace pg
             }
           mean_family /= families.n_families();
         }
-      const bool p0 =
+      const bool mixed = formulation.condensed_fields();
+      const bool unl_p0 =
         (formulation.fields == FormulationCode::Fields::condensed_p0);
       // Q1P0 is called H1P0 in 3-D (Table 7.4)
       pcout << "pg_solve: " << dim << "-D, formulation '"
-            << (formulation.method == FormulationCode::Method::fem && p0 &&
+            << (formulation.method == FormulationCode::Method::fem && mixed &&
                     dim == 3 ?
                   std::string("FEM H1P0") :
                   formulation.text)
             << "'";
       if (formulation.method != FormulationCode::Method::fem && !cpd)
         pcout << " (" << formulation.method_name() << ", "
-              << (p0                                                 ? "UnlP0" :
+              << (unl_p0 ? "UnlP0" :
+                  formulation.fields == FormulationCode::Fields::condensed_p1 ?
+                           "U2P1" :
                   formulation.points == FormulationCode::Points::unl ? "Unl" :
                   formulation.points == FormulationCode::Points::u1  ? "U1" :
                   formulation.points == FormulationCode::Points::u2  ? "U2" :
@@ -99,7 +102,7 @@ namespace pg
           const double locking =
             (prm.material.lambda() + 2. / 3. * prm.material.mu()) /
             prm.material.mu();
-          if (!p0 && prm.material.poissons_ratio >= 0.49 &&
+          if (!mixed && prm.material.poissons_ratio >= 0.49 &&
               (dim == 3 || prm.material.plane != "stress"))
             pcout << "\n  Warning: nu = " << prm.material.poissons_ratio
                   << " (K/mu = " << locking
@@ -114,8 +117,9 @@ namespace pg
             << "  cells:           "
             << discretization.triangulation.n_active_cells() << " ("
             << summary.n_fe_cells << " finite elements"
-            << (p0 && summary.n_fe_cells > 0 ? (dim == 2 ? " Q1P0" : " H1P0") :
-                                               "")
+            << (mixed && summary.n_fe_cells > 0 ?
+                  (dim == 2 ? " Q1P0" : " H1P0") :
+                  "")
             << ", " << summary.n_meshfree_cells << " meshfree)\n"
             << discretization.mesh_notes
             << "  particles:       " << particles.n_particles() << "\n";

@@ -106,7 +106,7 @@ namespace pg
     // The mixed codes (UnlP0, FEM Q1P0) condense p and Theta per element
     // with the isochoric/volumetric split of the material.
     const Materials::VolumetricSplit<dim> *condensed_pressure = nullptr;
-    if (formulation.fields == FormulationCode::Fields::condensed_p0)
+    if (formulation.condensed_fields())
       {
         condensed_pressure =
           dynamic_cast<const Materials::VolumetricSplit<dim> *>(&material);
@@ -135,7 +135,8 @@ namespace pg
           (condensed_pressure != nullptr &&
            formulation.method != FormulationCode::Method::pbg) ?
             discretization.family_elements.get() :
-            nullptr);
+            nullptr,
+          formulation.condensed_pressure_degree());
         if (formulation.points == FormulationCode::Points::u1s_unl)
           {
             // eq. (6.20) without plasticity: E~ = E, nu~ = min(0.49, nu)

@@ -4,7 +4,7 @@
 // code: the resolved code (which must parse to itself), the bond
 // correction, and whether the one-line notice of a changed default is
 // given. Then the codes that must be refused, with their reasons. The
-// mixed codes UnlP0 and FEM Q1P0 / H1P0 (issue 13) are among both.
+// mixed codes UnlP0, U2P1 and FEM Q1P0 / H1P0 (issue 13) are among both.
 
 #include <pg/base/formulation_code.h>
 
@@ -55,7 +55,9 @@ main()
                                  "VCPPG V2sn UnlP0",
                                  "VCPBG U2",
                                  "VCPPG U2",
-                                 "VC2PPG V4s U2"})
+                                 "VC2PPG V4s U2",
+                                 "VCPBG U2P1",
+                                 "PBG U2P1"})
     {
       const FormulationCode f     = parse_formulation_code(code);
       const FormulationCode again = parse_formulation_code(f.text);
@@ -80,8 +82,9 @@ main()
         "PBG V5sn Unl",      "VC2PPG V1sn U2", "PPG U1",
         "VCPPG Unl UL",      "PBG Unl U2",     "XPBG Unl",
         "VCPPG2 V3sn UnlP0", "PBG UnlP0 Unl",  "PBG IUnlP0",
-        "PBG U2P1",          "FEM Q2",         "FEM Q1P0 H1P0",
-        "VCPPG U1SUnl",      "PBG U1SIG",      "VC2PPG V2s U2"})
+        "VCPPG U2P1",        "FEM Q2",         "FEM Q1P0 H1P0",
+        "BCPBG U2P1",        "PBG U2P1 U2",    "VCPPG U1SUnl",
+        "PBG U1SIG",         "VC2PPG V2s U2"})
     try
       {
         parse_formulation_code(code);

@@ -1,9 +1,13 @@
-// The condensed-pressure elements (UnlP0 for PBG and PPG, Q1P0 / H1P0) of
-// assemble_condensed_pressure_element(), pg-methods.md section 12.2.1:
+// The condensed-pressure elements (UnlP0 for PBG and PPG, Q1P0 / H1P0, and
+// U2P1 with linear p and Theta) of assemble_condensed_pressure_element(),
+// pg-methods.md sections 12.2.1 and 12.2.2:
 // - the residual is the gradient of the condensed potential
-//   Pi = sum_q w_q W_iso(F_q) + W W_vol(J-bar) (central differences of Pi,
-//   computed here independently of the kernel), for PBG and Q1P0 (the
-//   Bubnov-Galerkin elements that have a potential);
+//   Pi = sum_q w_q W_iso(F_q) + W W_vol(J-bar) (P0), or
+//   sum_q w_q [W_iso(F_q) + W_vol(Theta_q)] with Theta the weighted L2
+//   projection of J onto linear functions (P1) (central differences of Pi,
+//   computed here independently of the kernel, with another basis of the
+//   linear functions), for PBG and Q1P0 (the Bubnov-Galerkin elements that
+//   have a potential);
 // - the tangent agrees with central differences of the residual (every
 //   element, PPG's non-symmetric one included);
 // - rigid motions give zero residual;
@@ -12,8 +16,8 @@
 // for the isochoric-volumetric neo-Hooke (theta = J) and linear
 // elasticity (theta = tr(eps), the B-bar method; rigid translations only,
 // the model is not rotation invariant) at nu = 0.3 and nu = 0.4999, on an
-// interior and a corner family of a distorted particle set (BCPBG, BCPPG),
-// and on Q1 cells, in 2-D and 3-D.
+// interior and a corner family of a distorted particle set (BCPBG, BCPPG,
+// PBG U2P1), and on Q1 cells, in 2-D and 3-D.
 
 #include <pg/base/formulation_code.h>
 #include <pg/elements/condensed_pressure.h>
@@ -44,26 +48,53 @@ make_split_material(const std::string &model, const double nu)
 
 
 
-/** The condensed potential, written out independently of the kernel. */
+/**
+ * The condensed potential, written out independently of the kernel: P0
+ * (@p degree 0) with the mean of theta, P1 with the weighted least-squares
+ * fit of theta by a + b . X (deal.II's FullMatrix, monomials about the
+ * origin; the kernel uses Eigen and a centred, scaled basis).
+ */
 template <int dim>
 double
 potential(const QuadratureTable<dim>            &table,
           const QuadratureTable<dim>            &volumetric,
           const std::vector<Tensor<1, dim>>     &y,
-          const Materials::VolumetricSplit<dim> &material)
+          const Materials::VolumetricSplit<dim> &material,
+          const unsigned int                     degree)
 {
   double Pi = 0;
   for (unsigned int q = 0; q < table.n_points(); ++q)
     Pi += table.weights[q] * material.isochoric_strain_energy_density(
                                deformation_gradient(table, q, y));
-  double W = 0, WJ = 0;
+  const unsigned int m = (degree == 0 ? 1 : dim + 1);
+  FullMatrix<double> M(m, m);
+  Vector<double>     b(m), c(m), phi(m);
+  const auto         basis = [&](const unsigned int q) {
+    phi[0] = 1.;
+    for (unsigned int i = 1; i < m; ++i)
+      phi[i] = volumetric.points[q][i - 1];
+  };
   for (unsigned int q = 0; q < volumetric.n_points(); ++q)
     {
-      W += volumetric.weights[q];
-      WJ += volumetric.weights[q] *
-            material.volume_measure(deformation_gradient(volumetric, q, y));
+      basis(q);
+      const double theta =
+        material.volume_measure(deformation_gradient(volumetric, q, y));
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          b[i] += volumetric.weights[q] * theta * phi[i];
+          for (unsigned int j = 0; j < m; ++j)
+            M(i, j) += volumetric.weights[q] * phi[i] * phi[j];
+        }
     }
-  return Pi + W * material.volumetric_strain_energy_density(WJ / W);
+  M.gauss_jordan();
+  M.vmult(c, b);
+  for (unsigned int q = 0; q < volumetric.n_points(); ++q)
+    {
+      basis(q);
+      Pi += volumetric.weights[q] *
+            material.volumetric_strain_energy_density(phi * c);
+    }
+  return Pi;
 }
 
 
@@ -99,7 +130,8 @@ check_element(const QuadratureTable<dim>            &table,
               const Materials::VolumetricSplit<dim> &material,
               const double                           h,
               const bool                             rotate,
-              std::mt19937                          &rng)
+              std::mt19937                          &rng,
+              const unsigned int                     degree = 0)
 {
   std::uniform_real_distribution<double> random(-1., 1.);
   const unsigned int                     n = X.size();
@@ -110,7 +142,13 @@ check_element(const QuadratureTable<dim>            &table,
   const auto residual = [&](const std::vector<Tensor<1, dim>> &at,
                             Vector<double>                    &r,
                             FullMatrix<double>                *K) {
-    assemble_condensed_pressure_element(table, volumetric, at, material, r, K);
+    assemble_condensed_pressure_element(table,
+                                        volumetric,
+                                        at,
+                                        material,
+                                        r,
+                                        K,
+                                        degree);
   };
 
   Errors             errors;
@@ -124,12 +162,18 @@ check_element(const QuadratureTable<dim>            &table,
       {
         y[b][c] += eps;
         residual(y, rp, nullptr);
-        const double Pi_p =
-          potential(table, volumetric ? *volumetric : table, y, material);
+        const double Pi_p = potential(table,
+                                      volumetric ? *volumetric : table,
+                                      y,
+                                      material,
+                                      degree);
         y[b][c] -= 2 * eps;
         residual(y, rm, nullptr);
-        const double Pi_m =
-          potential(table, volumetric ? *volumetric : table, y, material);
+        const double Pi_m = potential(table,
+                                      volumetric ? *volumetric : table,
+                                      y,
+                                      material,
+                                      degree);
         y[b][c] += eps;
         for (unsigned int i = 0; i < n * dim; ++i)
           {
@@ -221,7 +265,8 @@ test()
           dynamic_cast<const Materials::VolumetricSplit<dim> &>(
             *material_owner);
         const bool rotate = (model != "linear elastic");
-        for (const std::string code : {"BCPBG UnlP0", "BCPPG UnlP0"})
+        for (const std::string code :
+             {"BCPBG UnlP0", "BCPPG UnlP0", "PBG U2P1"})
           {
             const FormulationCode formulation = parse_formulation_code(code);
             FamilyElements<dim>   elements(fixture.particles,
@@ -238,13 +283,15 @@ test()
                 QuadratureTable<dim> table, master_table;
                 elements.build(k, table);
                 elements.build_master_table(k, master_table);
-                worst.max(check_element(table,
-                                        pbg ? nullptr : &master_table,
-                                        elements.geometry(k).bonds,
-                                        material,
-                                        h,
-                                        rotate,
-                                        rng));
+                worst.max(
+                  check_element(table,
+                                pbg ? nullptr : &master_table,
+                                elements.geometry(k).bonds,
+                                material,
+                                h,
+                                rotate,
+                                rng,
+                                formulation.condensed_pressure_degree()));
               }
             std::ostringstream name;
             name << formulation.text << ", " << model << ", nu = " << nu;

@@ -57,7 +57,13 @@ namespace pg
        * and condensed: UnlP0 (eq. 6.9, per family) and, for FEM and the
        * FE cells of a coupled model, Q1P0 (2-D) / H1P0 (3-D) per cell
        */
-      condensed_p0
+      condensed_p0,
+      /**
+       * U2P1 (eq. 6.10, pg-methods.md section 12.2.2): u (WTE2) with p and
+       * Theta linear per family (p^k + grad p^k . (X - X^k)) and condensed;
+       * the FE cells of a coupled model are Q1P0/H1P0
+       */
+      condensed_p1
     };
 
     /** The VC correction function (eqs. 5.60-5.64). */
@@ -119,6 +125,26 @@ namespace pg
      */
     std::string
     notice() const;
+
+    /**
+     * True for the mixed codes whose p and Theta are condensed per element
+     * (UnlP0, U2P1, FEM Q1P0/H1P0).
+     */
+    bool
+    condensed_fields() const
+    {
+      return fields != Fields::displacement;
+    }
+
+    /**
+     * The polynomial degree of the condensed p and Theta of the families:
+     * 0 (UnlP0, and the FE cells of every mixed code) or 1 (U2P1).
+     */
+    unsigned int
+    condensed_pressure_degree() const
+    {
+      return fields == Fields::condensed_p1 ? 1 : 0;
+    }
 
     /** "PBG", "PPG", "PPG2", "CPD" or "FEM". */
     std::string

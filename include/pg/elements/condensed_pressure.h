@@ -15,18 +15,20 @@ namespace pg
 {
   /**
    * The pressure p and the dilatation Theta of an element whose p and Theta
-   * are constant (P0) and condensed: the mixed PG UnlP0 (eq. 6.9, constant
-   * per family) and the mixed finite elements Q1P0 (2-D) and H1P0 (3-D)
-   * (constant per cell, deal.II's step-44).
+   * are condensed: constant (P0) in the mixed PG UnlP0 (eq. 6.9, per family)
+   * and the mixed finite elements Q1P0 (2-D) and H1P0 (3-D) (per cell,
+   * deal.II's step-44); linear (P1) in U2P1 (eq. 6.10, per family). For P1
+   * the values at the first volumetric point (a family's master).
    */
   struct CondensedPressure
   {
     /**
-     * Theta = theta-bar, the weighted mean of the volume measure theta
-     * (J, or tr(eps) for linear elasticity) over the volumetric points.
+     * Theta: the L2 projection of the volume measure theta (J, or tr(eps)
+     * for linear elasticity) over the volumetric points onto constants
+     * (theta-bar, the weighted mean) or linear functions.
      */
     double dilatation;
-    /** p = W_vol'(Theta) (force per area). */
+    /** p: the projection of W_vol'(Theta) (force per area). */
     double pressure;
   };
 
@@ -34,13 +36,15 @@ namespace pg
    * The condensed fields at the local positions @p y: the volumetric
    * points are those of @p volumetric_table (pg-methods.md section 12.2.1:
    * every point of a PBG family or a Q1 cell, the master of a PPG family).
-   * Throws if J <= 0 at a volumetric point (finite strain).
+   * Throws if J <= 0 at a volumetric point (finite strain). @p degree: 0
+   * (P0) or 1 (P1).
    */
   template <int dim>
   CondensedPressure
   condensed_pressure(const QuadratureTable<dim>            &volumetric_table,
                      const std::vector<Tensor<1, dim>>     &y,
-                     const Materials::VolumetricSplit<dim> &material);
+                     const Materials::VolumetricSplit<dim> &material,
+                     const unsigned int                     degree = 0);
 
   /**
    * The element residual and tangent of the three-field (u, p, Theta)
@@ -79,7 +83,8 @@ namespace pg
     const std::vector<Tensor<1, dim>>     &y,
     const Materials::VolumetricSplit<dim> &material,
     Vector<double>                        &residual,
-    FullMatrix<double>                    *tangent);
+    FullMatrix<double>                    *tangent,
+    const unsigned int                     degree = 0);
 } // namespace pg
 
 #endif

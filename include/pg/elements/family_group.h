@@ -95,7 +95,8 @@ namespace pg
    * @p condensed_pressure material the families are UnlP0 (eq. 6.9):
    * assemble_condensed_pressure_element() with p and Theta constant per
    * family, the volumetric points being the table's (PBG) or the master
-   * (PPG, from @p family_elements).
+   * (PPG, from @p family_elements); with @p condensed_pressure_degree = 1
+   * they are U2P1 (eq. 6.10): p and Theta linear per family.
    */
   template <int dim>
   class FamilyGroup : public FamilyGroupBase<dim>
@@ -108,7 +109,8 @@ namespace pg
       const std::vector<QuadratureTable<dim>> &family_tables,
       const Materials::Material<dim>          &material,
       const Materials::VolumetricSplit<dim>   *condensed_pressure = nullptr,
-      const FamilyElements<dim>               *family_elements    = nullptr);
+      const FamilyElements<dim>               *family_elements    = nullptr,
+      const unsigned int                       condensed_pressure_degree = 0);
 
     /**
      * Stabilise the families, whose tables (given to the constructor) are
@@ -141,6 +143,8 @@ namespace pg
     const Materials::VolumetricSplit<dim>   *condensed_pressure;
     /** For the master tables of PPG UnlP0; nullptr otherwise. */
     const FamilyElements<dim> *family_elements;
+    /** 0: UnlP0, 1: U2P1. */
+    const unsigned int condensed_pressure_degree;
   };
 
 
