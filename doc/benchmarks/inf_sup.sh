@@ -2,6 +2,7 @@
 # Benchmark B-8 (numerical inf-sup test): runs prm/inf_sup.prm for every
 # formulation on regular and distorted (0.3) meshes, N = 2..32, collects
 # the tables in doc/benchmarks/inf_sup/ and draws doc/figures/inf_sup.png.
+# ONLY=<name>: run that variant alone (e.g. ONLY=pbg_u2p1).
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/inf_sup.sh build-release/applications/pg_solve/pg_solve
 set -e
@@ -10,6 +11,7 @@ OUT=doc/benchmarks/inf_sup
 WORK=$(mktemp -d)
 mkdir -p "$OUT"
 run() { # name formulation pressure-space distortion
+  [ -n "$ONLY" ] && [ "${1%_*}" != "$ONLY" ] && return 0
   cat prm/inf_sup.prm - > "$WORK/$1.prm" <<END
 subsection Geometry
   set Distortion = $4
@@ -36,6 +38,9 @@ for d in 0 0.3; do
   run bcpbg_unl_$tag  "BCPBG Unl" displacement $d
   run pbg_u1_$tag     "PBG U1"    displacement $d
   run pbg_unlp0_$tag  "PBG Unl noBC" P0        $d
+  run bcpbg_unlp0_$tag "BCPBG Unl" P0          $d
+  run pbg_u2_$tag     "PBG U2"    displacement $d
+  run pbg_u2p1_$tag   "PBG U2"    P1           $d
 done
 rm -rf "$WORK"
 gnuplot doc/benchmarks/inf_sup.gp

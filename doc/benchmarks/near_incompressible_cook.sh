@@ -11,7 +11,8 @@
 # and doc/figures/near_incompressible_cook.png (PLOT_ONLY=1: redraw the
 # figure from an existing results.txt; ONLY=<label>: run one method and
 # append its rows). U1SUnl (eq. 6.18) is shown with the displacement
-# formulations: its pseudo-energy takes nu~ = 0.49.
+# formulations: its pseudo-energy takes nu~ = 0.49; the quadratic U2 and its
+# mixed U2P1 (eq. 6.10, p and Theta linear per family) as a pair too.
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/near_incompressible_cook.sh build-release/applications/pg_solve/pg_solve
 set -e
@@ -21,11 +22,12 @@ WORK=$(mktemp -d)
 mkdir -p "$OUT" doc/figures
 RESULTS="$OUT/results.txt"
 
-run() { # label formulation N [meshfree region]
+run() { # label formulation N [meshfree region [horizon factor]]
   # ONLY=<label>: run that method alone and append its rows
   [ -n "$ONLY" ] && [ "$1" != "$ONLY" ] && return 0
   name=$(echo "$1_$3" | tr ' /' '__')
   region=${4:-all}
+  horizon=${5:-2.51}
   [ "$2" = FEM ] || [ "$2" = "FEM Q1P0" ] && region=none
   cat > "$WORK/$name.prm" <<END
 set Dimension = 2
@@ -37,7 +39,7 @@ subsection Geometry
 end
 subsection Discretization
   set Formulation    = $2
-  set Horizon factor = 2.51
+  set Horizon factor = $horizon
 end
 subsection Material
   set Model           = isochoric-volumetric neo-Hooke
@@ -91,6 +93,10 @@ for N in 4 8 16 32 64; do
   run "VCBCPPG V3sn UnlP0" "VCBCPPG V3sn UnlP0" $N
   run "coupled UnlP0/Q1P0" "VCBCPPG V3sn UnlP0" $N "box 24, -1 : 49, 61"
   run "VCBCPBG V5sn U1SUnl" "VCBCPBG V5sn U1SUnl" $N
+  # WTE2 needs two particle columns on each side: the cells at the tip
+  # have an aspect ratio of 3, where 2.51 h holds one column (singular)
+  run "VCPBG V5sn U2" "VCPBG V5sn U2" $N all 3.51
+  run "VCPBG V5sn U2P1" "VCPBG V5sn U2P1" $N all 3.51
 done
 rm -rf "$WORK"
 fi
@@ -114,7 +120,8 @@ fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
 for label in dict.fromkeys(r[0] for r in rows if r[0] != "reference"):
     data = [r for r in rows if r[0] == label]
     dofs = [int(r[3]) for r in data]
-    dashed = "Unl" in label and "P0" not in label or label == "FEM Q1"
+    dashed = ("Unl" in label and "P0" not in label or label == "FEM Q1"
+              or label.endswith(" U2"))
     style = "--" if dashed else "-"
     ax[0].semilogx(dofs, [float(r[4]) for r in data], style, marker="o", label=label)
     ax[1].loglog(dofs, [abs(float(r[4]) - ref) / ref for r in data], style, marker="o", label=label)

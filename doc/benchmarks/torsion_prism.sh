@@ -7,8 +7,11 @@
 # largest angle (whole degrees) that converges in ONE load step (no step
 # cuts, at most 'Maximum iterations' = 30 Newton iterations), found by
 # bisection between 0 and 128 degrees. Mesh: N x N x 5N cells (default
-# N = 8; the source used 16), horizon 1.51 h as in the source. The load
-# step starts with 'Predictor' = linearized (default) or 'boundary values'.
+# N = 8; the source used 16), horizon 1.51 h as in the source (HORIZON=<factor>
+# to change it: the quadratic U2 needs 10 members in 3-D, more than 1.51 h
+# gives at the corners). The load step starts with 'Predictor' = linearized
+# (default) or 'boundary values'. FORMULATIONS="<code>|<code>...": run
+# these only; APPEND=1: append to the results instead of starting them.
 # Writes doc/benchmarks/torsion_prism/results_N<N>_<predictor>.txt.
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/torsion_prism.sh build-release/applications/pg_solve/pg_solve [N] [linearized|boundary values]
@@ -16,11 +19,13 @@ set -e
 PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
 N=${2:-8}
 PREDICTOR=${3:-linearized}
+HORIZON=${HORIZON:-1.51}
 OUT=doc/benchmarks/torsion_prism
 WORK=$(mktemp -d)
 mkdir -p "$OUT"
 RESULTS="$OUT/results_N${N}_$(echo "$PREDICTOR" | tr ' ' '_').txt"
-echo "# formulation | mesh | DoFs | largest single-step angle (deg) | first failing angle (deg) | Newton iterations at the largest angle | seconds per Newton step" > "$RESULTS"
+[ -n "$APPEND" ] ||
+  echo "# formulation | mesh | horizon factor | DoFs | largest single-step angle (deg) | first failing angle (deg) | Newton iterations at the largest angle | seconds per Newton step" > "$RESULTS"
 
 # converges <formulation> <angle in degrees>: exit status 0 if one load step
 # of that angle converges
@@ -36,7 +41,7 @@ subsection Geometry
 end
 subsection Discretization
   set Formulation    = $1
-  set Horizon factor = 1.51
+  set Horizon factor = $HORIZON
 end
 subsection Material
   set Model         = isochoric-volumetric neo-Hooke
@@ -69,8 +74,9 @@ END
   "$PG_SOLVE" "$WORK/run.prm" > "$WORK/run.log" 2>&1
 }
 
-for f in "FEM" "FEM H1P0" "VCBCPPG V3sn Unl" "VCBCPPG V3sn UnlP0" \
-         "VCBCPBG V5sn Unl" "VCBCPBG V5sn UnlP0"; do
+[ -n "$FORMULATIONS" ] ||
+  FORMULATIONS="FEM|FEM H1P0|VCBCPPG V3sn Unl|VCBCPPG V3sn UnlP0|VCBCPBG V5sn Unl|VCBCPBG V5sn UnlP0|VCPBG V5sn U2|VCPBG V5sn U2P1"
+echo "$FORMULATIONS" | tr '|' '\n' | while read -r f; do
   lo=0
   hi=128
   while [ $((hi - lo)) -gt 1 ]; do
@@ -82,15 +88,20 @@ for f in "FEM" "FEM H1P0" "VCBCPPG V3sn Unl" "VCBCPPG V3sn UnlP0" \
       hi=$mid
     fi
   done
-  /usr/bin/env python3 - "$WORK/best.json" "$f" "$N" $lo $hi >> "$RESULTS" <<'END'
+  if [ $lo -eq 0 ]; then
+    echo "$f | $N x $N x $((5 * N)) | $HORIZON | - | 0 | 1 | - | - ($(tail -n 2 "$WORK/run.log" | tr '\n' ' '))" >> "$RESULTS"
+    tail -n 1 "$RESULTS"
+    continue
+  fi
+  /usr/bin/env python3 - "$WORK/best.json" "$f" "$N" $lo $hi "$HORIZON" >> "$RESULTS" <<'END'
 import json, sys
 s = json.load(open(sys.argv[1]))
 t = s["timing"]
 n = max(s["newton_iterations"], 1)
 N = int(sys.argv[3])
-print("%s | %d x %d x %d | %d | %s | %s | %d | %.3f" % (
-    sys.argv[2], N, N, 5 * N, s["n_dofs"], sys.argv[4], sys.argv[5], n,
-    (t["assembly"] + t["solve"]) / n))
+print("%s | %d x %d x %d | %s | %d | %s | %s | %d | %.3f" % (
+    sys.argv[2], N, N, 5 * N, sys.argv[6], s["n_dofs"], sys.argv[4],
+    sys.argv[5], n, (t["assembly"] + t["solve"]) / n))
 END
   tail -n 1 "$RESULTS"
 done

@@ -37,12 +37,14 @@ namespace pg
         prm.declare_entry(
           "Pressure space",
           "displacement",
-          Patterns::Selection("displacement|P0"),
+          Patterns::Selection("displacement|P0|P1"),
           "inf-sup: the pressure space of T_h. displacement: the "
           "displacement-based formulation as it is (T_h from the full "
           "div-div term, K = 1, mu = 0, at every evaluation point). P0: one "
           "constant pressure per element (Q1 cell or PG family), condensed "
-          "exactly; Q1P0 for FEM, UnlP0 for PBG families.");
+          "exactly; Q1P0 for FEM, UnlP0 for PBG families. P1: a linear "
+          "pressure per PBG family (U2P1 with 'Formulation = PBG U2'), "
+          "constant per Q1 cell.");
         prm.declare_entry("Inf-sup subdivisions",
                           "2, 4, 8, 16, 32",
                           Patterns::List(Patterns::Integer(1)),

@@ -1,5 +1,7 @@
 #include <pg/analysis/inf_sup.h>
 #include <pg/base/exceptions.h>
+#include <pg/elements/condensed_pressure.h>
+#include <pg/materials/linear_elastic.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/lapack_support.h>
@@ -115,30 +117,30 @@ namespace pg
 
       template <int dim>
       void
-      p0_pressure_projection(const QuadratureTable<dim> &table,
-                             FullMatrix<double>         &matrix)
+      pressure_projection(const QuadratureTable<dim>        &table,
+                          const std::vector<Tensor<1, dim>> &y,
+                          const unsigned int                 degree,
+                          FullMatrix<double>                &matrix)
       {
         AssertThrow(table.test_is_trial,
-                    ExcMessage("The P0 pressure projection needs a "
-                               "Bubnov-Galerkin table (test = trial)."));
-        const unsigned int n = table.n_nodes;
-        // b_{aA} = sum_q w_q B^{qa}_A (node-major), V_e = sum_q w_q
-        std::vector<double> b(n * dim, 0.);
-        double              volume = 0;
-        for (unsigned int q = 0; q < table.n_points(); ++q)
-          {
-            const double w = table.weights[q];
-            volume += w;
-            for (unsigned int a = 0; a < n; ++a)
-              for (unsigned int A = 0; A < dim; ++A)
-                b[a * dim + A] += w * table.trial[q * n + a][A];
-          }
-        matrix.reinit(n * dim, n * dim);
-        if (volume <= 0)
-          return;
-        for (unsigned int i = 0; i < n * dim; ++i)
-          for (unsigned int j = 0; j < n * dim; ++j)
-            matrix(i, j) = b[i] * b[j] / volume;
+                    ExcMessage("The condensed pressure projection of the "
+                               "inf-sup test needs a Bubnov-Galerkin table "
+                               "(test = trial)."));
+        // linear elasticity with K = 1, mu = 0: W = W_vol = (tr eps)^2 / 2
+        Parameters::Material parameters;
+        parameters.model         = "linear elastic";
+        parameters.plane         = "strain";
+        parameters.bulk_modulus  = 1.;
+        parameters.shear_modulus = 0.;
+        const Materials::LinearElastic<dim> divergence_only(parameters);
+        Vector<double>                      residual;
+        assemble_condensed_pressure_element<dim>(table,
+                                                 nullptr,
+                                                 y,
+                                                 divergence_only,
+                                                 residual,
+                                                 &matrix,
+                                                 degree);
       }
 
 
@@ -252,11 +254,15 @@ namespace pg
       template class H1Material<2>;
       template class H1Material<3>;
       template void
-      p0_pressure_projection<2>(const QuadratureTable<2> &,
-                                FullMatrix<double> &);
+      pressure_projection<2>(const QuadratureTable<2> &,
+                             const std::vector<Tensor<1, 2>> &,
+                             const unsigned int,
+                             FullMatrix<double> &);
       template void
-      p0_pressure_projection<3>(const QuadratureTable<3> &,
-                                FullMatrix<double> &);
+      pressure_projection<3>(const QuadratureTable<3> &,
+                             const std::vector<Tensor<1, 3>> &,
+                             const unsigned int,
+                             FullMatrix<double> &);
     } // namespace InfSup
   }   // namespace Analysis
 } // namespace pg

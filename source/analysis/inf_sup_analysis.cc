@@ -39,7 +39,11 @@ namespace pg
         level.system.homogeneous_constraints();
       const InfSup::PressureProjectionMaterial<dim> t_material;
       const InfSup::H1Material<dim>                 s_material;
-      const bool p0 = (level.parameters.analysis.pressure_space == "P0");
+      // The condensed pressure of the mixed spaces: constant per Q1 cell,
+      // constant (P0) or linear (P1) per family.
+      const std::string &space = level.parameters.analysis.pressure_space;
+      const bool         mixed = (space != "displacement");
+      const unsigned int family_degree = (space == "P1" ? 1 : 0);
       T.copy_from(level.system.tangent());
       T = 0;
       S.copy_from(level.system.tangent());
@@ -49,9 +53,10 @@ namespace pg
       // The undeformed state: y^b = X^b - X^0 (u = 0; both forms are linear).
       const auto add = [&](const QuadratureTable<dim>                 &table,
                            const std::vector<Tensor<1, dim>>          &y,
-                           const std::vector<types::global_dof_index> &dofs) {
-        if (p0)
-          InfSup::p0_pressure_projection(table, t_local);
+                           const std::vector<types::global_dof_index> &dofs,
+                           const unsigned int                          degree) {
+        if (mixed)
+          InfSup::pressure_projection(table, y, degree, t_local);
         else
           assemble_element(table, y, t_material, residual, &t_local);
         assemble_element(table, y, s_material, residual, &s_local);
@@ -74,7 +79,7 @@ namespace pg
           y.resize(cell->n_vertices());
           for (unsigned int b = 0; b < y.size(); ++b)
             y[b] = cell->vertex(b) - cell->vertex(0);
-          add(table, y, dofs);
+          add(table, y, dofs, 0);
         }
       const ParticleSet<dim> &particles = *view.particles;
       for (unsigned int f = 0; f < view.owned_families->size(); ++f)
@@ -89,7 +94,7 @@ namespace pg
               for (unsigned int c = 0; c < dim; ++c)
                 dofs[b * dim + c] = particles.dof(members[b], c);
             }
-          add((*view.family_tables)[f], y, dofs);
+          add((*view.family_tables)[f], y, dofs, family_degree);
         }
       T.compress(VectorOperation::add);
       S.compress(VectorOperation::add);
@@ -136,8 +141,11 @@ namespace pg
       result.pressure_space = prm.analysis.pressure_space;
       result.zero_tolerance = tolerance;
       const double nan      = std::numeric_limits<double>::quiet_NaN();
-      const bool   p0       = (prm.analysis.pressure_space == "P0");
-      RunSummary   last;
+      const bool   mixed    = (prm.analysis.pressure_space != "displacement");
+      // pressures per family: 1 (P0) or dim + 1 (P1)
+      const unsigned int family_pressures =
+        (prm.analysis.pressure_space == "P1" ? dim + 1 : 1);
+      RunSummary last;
       for (unsigned int i = 0; i < series.size(); ++i)
         {
           const unsigned int   N        = series[i];
@@ -161,11 +169,13 @@ namespace pg
                                       level.system.homogeneous_constraints(),
                                       tolerance,
                                       max_size);
-              // n_p: one pressure per element (Q1 cell or family) for
-              // P0.
-              const double n_p = p0 ? level.view->owned_fe_cells->size() +
-                                        level.view->owned_families->size() :
-                                      nan;
+              // n_p: one pressure per Q1 cell, 1 (P0) or dim + 1 (P1) per
+              // family
+              const double n_p =
+                mixed ?
+                  level.view->owned_fe_cells->size() +
+                    family_pressures * level.view->owned_families->size() :
+                  nan;
               result.N.push_back(N);
               result.n_dofs.push_back(level.summary.n_dofs);
               result.n_free.push_back(value.n_free);
@@ -173,7 +183,7 @@ namespace pg
               result.n_zero.push_back(value.n_zero);
               // (7.15) with k = n_zero + 1
               result.k_pm.push_back(
-                p0 ? value.n_zero + 1. - (value.n_free - n_p + 1.) : nan);
+                mixed ? value.n_zero + 1. - (value.n_free - n_p + 1.) : nan);
               result.beta.push_back(value.beta);
               result.slope.push_back(i == 0 ?
                                        nan :
@@ -188,7 +198,7 @@ namespace pg
               std::ostringstream line;
               line << "  inf-sup N = " << N << ": " << value.n_free
                    << " free DoFs";
-              if (p0)
+              if (mixed)
                 line << ", " << n_p << " pressures";
               line << ", zero eigenvalues " << value.n_zero
                    << std::setprecision(3) << ", beta = " << value.beta;
@@ -207,7 +217,7 @@ namespace pg
             << ", distortion " << prm.geometry.distortion << "\n"
             << "# zero eigenvalues: lambda < " << tolerance
             << " lambda_max; beta = sqrt(first non-zero lambda) (7.14); "
-            << "slope = -dlog(beta)/dlog(N); k_pm (7.15) for P0 only\n"
+            << "slope = -dlog(beta)/dlog(N); k_pm (7.15) for P0 and P1 only\n"
             << "# N n_dofs n_u n_p zero k_pm beta slope lambda_max "
             << "largest_zero/lambda_max\n";
       for (unsigned int i = 0; i < result.N.size(); ++i)

@@ -164,9 +164,10 @@ namespace pg
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(M);
         AssertThrow(eigen.eigenvalues().minCoeff() > 1e-8 * volume,
                     ExcMessage(
-                      "The points of a U2P1 family lie on a line (2-D) or a "
-                      "plane (3-D): a linear pressure field is undetermined "
-                      "on them. Enlarge the horizon (subsection "
+                      "The evaluation points of a family with a linear "
+                      "pressure (U2P1) lie on a line (2-D) or a plane "
+                      "(3-D): a linear pressure field is undetermined on "
+                      "them. Enlarge the horizon (subsection "
                       "'Discretization')."));
         M_inverse = M.inverse();
       }

@@ -30,6 +30,11 @@
 // 0.814). Its tangent is not symmetric; the real parts of its
 // eigenvalues are counted (none has a negative real part).
 //
+// The mixed U2P1 (eq. 6.10: WTE2 displacements, p and Theta linear per
+// family) against its displacement counterpart VCPBG U2 (= VCPBG V5sn
+// U2), at nu = 0.4 and 0.4999: the rigid modes only, no negative
+// eigenvalue; the first eigenvalues measure how much each locks.
+//
 // A finding printed as well: VC-corrected PPG *without* BC has negative
 // eigenvalues (an unstable tangent), which is why it can converge to
 // spurious equilibria under finite strain (homogeneous_deformation_01).
@@ -64,7 +69,11 @@ main(int argc, char **argv)
                                  "VCBCPBG V5sn Unl @ 0.4999",
                                  "VCPBG U1SUnl @ 0.4999",
                                  "PBG U1 hg 0.02",
-                                 "PBG U1 hg 0.05"})
+                                 "PBG U1 hg 0.05",
+                                 "VCPBG U2",
+                                 "VCPBG U2P1",
+                                 "VCPBG U2 @ 0.4999",
+                                 "VCPBG U2P1 @ 0.4999"})
     {
       // "<code> @ <nu>": the same block at another Poisson's ratio;
       // "<code> hg <alpha>": with 'Hourglass coefficient = alpha'

@@ -22,7 +22,9 @@
 // volumetric point. V4 needs option s (pg_solve/v4_patch_dirichlet; the
 // message for sn: exit_code/v4_needs_option_s), which misses this patch
 // test under a traction like every s (below). VCPBG U1SUnl equals VCPBG
-// Unl here (nu = 0.3 <= 0.49).
+// Unl here (nu = 0.3 <= 0.49). The quadratic U2 with VC (V5sn) and its
+// mixed U2P1 (p and Theta linear per family; Q1P0 cells when coupled)
+// pass too.
 //
 // Printed as numbers (3 digits) instead:
 // - the uncorrected methods (Table 7.2 gives about 1e-1 for PPG Unl);
@@ -67,7 +69,9 @@ main(int argc, char **argv)
                                      "VCBCPBG V5sn UnlP0",
                                      "VCBCPPG V2sn Unl",
                                      "VCBCPPG V2sn UnlP0",
-                                     "VCPBG U1SUnl"})
+                                     "VCPBG U1SUnl",
+                                     "VCPBG U2",
+                                     "VCPBG U2P1"})
         {
           const pg::RunSummary s =
             run_problem<2>(patch_test(code, region), screen);

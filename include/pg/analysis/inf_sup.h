@@ -78,20 +78,26 @@ namespace pg
       };
 
       /**
-       * The element matrix of T_h for one constant pressure per element
-       * (Q1P0 for a Q1 cell, UnlP0 for a PBG family, pg-methods.md section
-       * 12.2.1), statically condensed exactly: with the integrated
-       * divergence of each shape function b_{aA} = sum_q w_q B^{qa}_A and
-       * the element volume V_e = sum_q w_q,
-       *   T_e = b b^T / V_e.
-       * For a PBG family V_e = V^k and b / V_e = dJbar^k/du, so T_e is the
-       * condensed volumetric tangent V^k W''_vol dJbar dJbar with K = 1.
-       * Only Bubnov-Galerkin tables (test = trial) are accepted.
+       * The element matrix of T_h for a pressure per element that is
+       * statically condensed exactly: constant (@p degree 0: Q1P0 for a Q1
+       * cell, UnlP0 for a PBG family, pg-methods.md section 12.2.1) or
+       * linear (@p degree 1: U2P1 for a PBG family, section 12.2.2). With
+       * the basis phi_q of the pressure, its moment matrix M = sum_q w_q
+       * phi_q phi_q^T and the integrated divergences b_{i,aA} = sum_q w_q
+       * phi_{q,i} B^{qa}_A,
+       *   T_e = b^T M^{-1} b
+       * (for P0: b b^T / V_e). This is the tangent of the condensed mixed
+       * element (assemble_condensed_pressure_element()) for linear
+       * elasticity with K = 1 and mu = 0 at the undeformed positions @p y,
+       * and is computed by it. Only Bubnov-Galerkin tables (test = trial)
+       * are accepted.
        */
       template <int dim>
       void
-      p0_pressure_projection(const QuadratureTable<dim> &table,
-                             FullMatrix<double>         &matrix);
+      pressure_projection(const QuadratureTable<dim>        &table,
+                          const std::vector<Tensor<1, dim>> &y,
+                          const unsigned int                 degree,
+                          FullMatrix<double>                &matrix);
 
       /** The result of one mesh of the test. */
       struct Value
