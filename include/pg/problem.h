@@ -107,6 +107,11 @@ namespace pg
      * statistics, output files) and total.
      */
     std::map<std::string, double> timing;
+    /**
+     * Mixed formulations: the smallest and largest condensed pressure p
+     * over the elements at the last output (empty otherwise).
+     */
+    std::vector<double> condensed_pressure_range;
     /** Largest |d^k| at interior particles, divided by spacing^(dim-1). */
     double max_interior_unit_stress_residual = 0;
     /**

@@ -300,7 +300,9 @@ namespace pg
         << "  \"max_interface_stress_jump\": "
         << json_number(s.max_interface_stress_jump) << ",\n"
         << "  \"max_interior_second_order_residual\": "
-        << json_number(s.max_interior_second_order_residual) << ",\n";
+        << json_number(s.max_interior_second_order_residual) << ",\n"
+        << "  \"condensed_pressure_range\": "
+        << json_list(s.condensed_pressure_range) << ",\n";
     const auto json_named_lists =
       [&out](
         const std::string                                              &key,

@@ -1,3 +1,4 @@
+#include <pg/postprocess/condensed_pressure_field.h>
 #include <pg/postprocess/output.h>
 #include <pg/postprocess/postprocessors.h>
 #include <pg/problem.h>
@@ -6,6 +7,7 @@
 
 #include <fstream>
 #include <iomanip>
+#include <optional>
 
 namespace pg
 {
@@ -53,6 +55,19 @@ namespace pg
                                {"solve", *view.time_solve},
                                {"postprocess", view.postprocess_timer->wall_time()},
                                {"total", view.total_timer->wall_time()}};
+      // The condensed pressure of a mixed formulation: its range goes to
+      // summary.json, its field to the VTU files.
+      const bool     mixed = view.formulation->condensed_fields();
+      Vector<double> u_full;
+      std::optional<CondensedPressureField> pressure;
+      if (mixed || prm.output.vtu)
+        u_full = view.gather_displacement(); // collective
+      if (mixed)
+        {
+          pressure = condensed_pressure_field(view, u_full);
+          summary.condensed_pressure_range = {pressure->min_pressure,
+                                              pressure->max_pressure};
+        }
       if (view.root)
         {
           std::ofstream stat(dir + "statistics.txt");
@@ -68,11 +83,10 @@ namespace pg
         return;
 
       const auto &particles = *view.particles;
-      // DataOut reads any DoF: gathered
-      const Vector<double> u_full   = view.gather_displacement();
-      const auto          &material = *view.material;
-      const MPI_Comm       comm     = view.mpi_communicator;
-      DataOut<dim>         data_out;
+      // (DataOut reads any DoF: u_full is gathered)
+      const auto    &material = *view.material;
+      const MPI_Comm comm     = view.mpi_communicator;
+      DataOut<dim>   data_out;
       data_out.attach_dof_handler(*view.dof_handler);
       const std::vector<std::string> names(dim, "displacement");
       data_out.add_data_vector(
@@ -100,6 +114,13 @@ namespace pg
       for (unsigned int c = 0; c < meshfree.size(); ++c)
         meshfree_cell[c] = meshfree[c];
       data_out.add_data_vector(meshfree_cell, "meshfree");
+      if (pressure)
+        {
+          data_out.add_data_vector(pressure->cell_pressure,
+                                   "condensed_pressure");
+          data_out.add_data_vector(pressure->cell_dilatation,
+                                   "condensed_dilatation");
+        }
       data_out.build_patches();
       const std::string cells =
         data_out.write_vtu_with_pvtu_record(dir, "solution", step, comm, 4);
@@ -113,6 +134,11 @@ namespace pg
       particle_names.push_back("volume");
       for (unsigned int c = 0; c < dim; ++c)
         particle_names.push_back("unit_stress_residual");
+      if (pressure)
+        {
+          particle_names.push_back("condensed_pressure");
+          particle_names.push_back("condensed_dilatation");
+        }
       ParticleOutput<dim> particle_out(particle_names);
       std::vector<double> data, stress_values;
       for (const unsigned int k : *view.owned_families)
@@ -125,6 +151,11 @@ namespace pg
           data.push_back(particles.volume(k));
           for (unsigned int c = 0; c < dim; ++c)
             data.push_back((*view.unit_stress)[k][c]);
+          if (pressure)
+            {
+              data.push_back(pressure->particle_pressure[k]);
+              data.push_back(pressure->particle_dilatation[k]);
+            }
           particle_out.add_particle(particles.position(k), data);
         }
       const std::string particles_file =
