@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -331,6 +332,109 @@ namespace pg
 
 
 
+    template <int dim>
+    double
+    mls1_second_derivatives(const FamilyGeometry<dim>   &family,
+                            const double                 self_weight,
+                            std::vector<Tensor<2, dim>> &h)
+    {
+      using Vec            = Eigen::Matrix<double, dim + 1, 1>;
+      using Mat            = Eigen::Matrix<double, dim + 1, dim + 1>;
+      const unsigned int n = family.bonds.size();
+      const double       L = family_scale(family); // basis scaling only
+      const double       e = family.weight_exponent;
+
+      // At X = X^k: omega_i, d omega_i / dX_A, d^2 omega_i / dX_A dX_B of
+      // omega = |d|^(-2e), d = X^i - X (pg-methods.md section 6.3), times V^i
+      std::vector<Vec>                      p(n);
+      std::vector<double>                   w(n);
+      std::vector<Tensor<1, dim>>           dw(n);
+      std::vector<Tensor<2, dim>>           ddw(n);
+      Mat                                   M = Mat::Zero();
+      std::array<Mat, dim>                  dM;
+      std::array<std::array<Mat, dim>, dim> ddM;
+      for (unsigned int a = 0; a < dim; ++a)
+        {
+          dM[a] = Mat::Zero();
+          for (unsigned int b = 0; b < dim; ++b)
+            ddM[a][b] = Mat::Zero();
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          p[i](0) = 1.;
+          for (unsigned int a = 0; a < dim; ++a)
+            p[i](a + 1) = family.bonds[i][a] / L;
+          const Tensor<1, dim> &d  = family.bonds[i];
+          const double          r2 = d.norm_square();
+          const double          V  = family.volumes[i];
+          if (i == 0)
+            w[i] = self_weight * V;
+          else
+            {
+              w[i]            = weight(r2, e) * V;
+              const double c1 = 2. * e * std::pow(r2, -e - 1.) * V;
+              const double c2 =
+                2. * e * (2. * e + 2.) * std::pow(r2, -e - 2.) * V;
+              dw[i] = c1 * d;
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = 0; b < dim; ++b)
+                  ddw[i][a][b] = -c1 * (a == b) + c2 * d[a] * d[b];
+            }
+          const Mat pp = p[i] * p[i].transpose();
+          M += w[i] * pp;
+          for (unsigned int a = 0; a < dim; ++a)
+            {
+              dM[a] += dw[i][a] * pp;
+              for (unsigned int b = 0; b < dim; ++b)
+                ddM[a][b] += ddw[i][a][b] * pp;
+            }
+        }
+      const double cond = condition_number(Mat(M / M.norm()));
+      h.assign(n, Tensor<2, dim>());
+      if (!std::isfinite(cond))
+        return cond;
+      const Mat Minv = M.inverse();
+
+      // gamma = M^{-1} p(X - X^k) at X = X^k, and its derivatives
+      // (d p / dX_A = e_{A+1} / L, d^2 p = 0)
+      Vec p0                     = Vec::Zero();
+      p0(0)                      = 1.;
+      const Vec            gamma = Minv * p0;
+      std::array<Vec, dim> dgamma;
+      for (unsigned int a = 0; a < dim; ++a)
+        {
+          Vec dp    = Vec::Zero();
+          dp(a + 1) = 1. / L;
+          dgamma[a] = Minv * (dp - dM[a] * gamma);
+        }
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = a; b < dim; ++b)
+          {
+            const Vec ddgamma = Minv * (-ddM[a][b] * gamma - dM[a] * dgamma[b] -
+                                        dM[b] * dgamma[a]);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const double value = ddw[i][a][b] * p[i].dot(gamma) +
+                                     dw[i][a] * p[i].dot(dgamma[b]) +
+                                     dw[i][b] * p[i].dot(dgamma[a]) +
+                                     w[i] * p[i].dot(ddgamma);
+                h[i][a][b] = value;
+                h[i][b][a] = value;
+              }
+          }
+      return cond;
+    }
+
+
+
+    template double
+    mls1_second_derivatives<2>(const FamilyGeometry<2> &,
+                               const double,
+                               std::vector<Tensor<2, 2>> &);
+    template double
+    mls1_second_derivatives<3>(const FamilyGeometry<3> &,
+                               const double,
+                               std::vector<Tensor<2, 3>> &);
     template double
     raw_gradients<2>(const Base,
                      const FamilyGeometry<2> &,

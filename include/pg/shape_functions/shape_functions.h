@@ -77,6 +77,26 @@ namespace pg
                           std::vector<Tensor<1, dim>> &gradients);
 
     /**
+     * The second derivatives h^i = d^2 N^{kki}_MLS1 / dX dX (symmetric,
+     * 1/length^2) of the MLS1 shape functions of family k at its master
+     * (eq. 6.28, pg-methods.md sections 6.3 and 12.3.3), from the full
+     * derivative of N_i(X) = V^i omega_i(X) p^{ki} . M(X)^{-1} p(X - X^k)
+     * with the moving weights omega_i(X) = |X^i - X|^(-2n). The master's
+     * own weight is not the exception 0 but the finite constant
+     * @p self_weight (times V^k; its derivatives are zero): the "modified
+     * weight function exception" of eq. (6.28), doc/ambiguities.md. The
+     * second derivatives reproduce those of every linear field, i.e.
+     * sum_i h^i = 0 and sum_i dX^{ki} (x) h^i = 0. With n = 0 the weights
+     * are constant and every h^i is zero. Returns the condition number of
+     * the moment matrix at the master (infinite if singular).
+     */
+    template <int dim>
+    double
+    mls1_second_derivatives(const FamilyGeometry<dim>   &family,
+                            const double                 self_weight,
+                            std::vector<Tensor<2, dim>> &second_derivatives);
+
+    /**
      * Effective (difference-form) gradients, pg-methods.md section 1.1:
      * B^i = g^i for i != 0 and B^0 = -sum_{i != 0} g^i.
      */

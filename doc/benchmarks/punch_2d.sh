@@ -1,0 +1,145 @@
+#!/bin/sh
+# Benchmark B-9 (dissertation section 7.3.1, Figs. 7.16-7.17): the 2-D
+# punch of prm/punch_2d.prm (block 2 x 1, the left half of the top edge
+# pushed down by u = -t and held horizontally, symmetry at x = 0, roller at
+# y = 0, isochoric-volumetric neo-Hooke E = 1, nu = 0.3;
+# 100 load steps of 0.01, at most 8 cuts
+# each, linearized predictor). Every formulation runs until Newton fails
+# (or t = 1). Recorded per formulation: the last load factor reached t
+# (from pg_solve's message), the remaining thickness 1 - t, the largest
+# u_x and -u_y over all 65 x 33 nodes at the last completed load step, the
+# load steps completed, the step cuts, the Newton iterations and the wall
+# time. The displacement of every node is recorded through 'Output/Points'
+# (one named point per node), which gives the curve max u_x against
+# max -u_y over the load history (Fig. 7.16, right) and the last
+# configurations (Fig. 7.17).
+# N=<cells in x> (default 64, i.e. 64 x 32 as in the source);
+# FORMULATIONS="<code>|<code>...": run these only (default FEM, VCBCPPG V3sn
+# Unl, VCBCPBG V5sn Unl); MIXED=1 adds FEM Q1P0, VCBCPPG V3sn UnlP0 and
+# VCBCPBG V5sn UnlP0. The two PBG runs take about 10 minutes each at N = 64
+# (Release, one core), the others well under a minute.
+# Writes doc/benchmarks/punch_2d/results.txt, history_<n>.txt per
+# formulation, and doc/figures/punch_2d.png.
+# Usage (from the repository root, with a Release build):
+#   sh doc/benchmarks/punch_2d.sh build-release/applications/pg_solve/pg_solve
+set -e
+PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
+N=${N:-64}
+M=$((N / 2))
+OUT=doc/benchmarks/punch_2d
+FIG=doc/figures/punch_2d.png
+ROOT=$(pwd)
+WORK=$(mktemp -d)
+mkdir -p "$OUT" doc/figures
+RESULTS="$OUT/results.txt"
+
+[ -n "$FORMULATIONS" ] ||
+  FORMULATIONS="FEM|VCBCPPG V3sn Unl|VCBCPBG V5sn Unl"
+[ -z "$MIXED" ] ||
+  FORMULATIONS="$FORMULATIONS|FEM Q1P0|VCBCPPG V3sn UnlP0|VCBCPBG V5sn UnlP0"
+
+# one named point per node: n<i>_<j> at (2 i / N, j / M)
+POINTS=$(awk -v n="$N" -v m="$M" 'BEGIN {
+  s = ""
+  for (j = 0; j <= m; ++j)
+    for (i = 0; i <= n; ++i)
+      s = s sprintf("%sn%d_%d: %.17g, %.17g", (s == "" ? "" : "; "), i, j, 2 * i / n, j / m)
+  print s }')
+
+echo "# 2-D punch, prm/punch_2d.prm, $N x $M cells; remaining thickness = 1 - t at the last load factor t reached" > "$RESULTS"
+echo "# formulation | DoFs | t reached | remaining thickness (%) | t of last completed step | max u_x | max -u_y | load steps completed | step cuts | Newton iterations | wall (s) | exit code | stop message (shortened)" >> "$RESULTS"
+
+k=0
+echo "$FORMULATIONS" | tr '|' '\n' | while read -r f; do
+  k=$((k + 1))
+  cat > "$WORK/run.prm" <<END
+include $ROOT/prm/punch_2d.prm
+subsection Geometry
+  set Subdivisions = $N, $M
+end
+subsection Discretization
+  set Formulation = $f
+end
+subsection Output
+  set Directory = $WORK/out$k
+  set VTU       = false
+  set Points    = $POINTS
+end
+END
+  rc=0
+  "$PG_SOLVE" "$WORK/run.prm" > "$WORK/run$k.log" 2>&1 || rc=$?
+  tag=$(echo "$f" | tr ' ' '_')
+  /usr/bin/env python3 - "$WORK/out$k" "$WORK/run$k.log" "$f" "$rc" "$N" "$M" "$OUT/history_$tag.txt" >> "$RESULTS" <<'END'
+import json, re, sys
+out, log, name, rc, n, m, hist = sys.argv[1:8]
+n, m = int(n), int(m)
+s = json.load(open(out + "/summary.json"))
+msg = s.get("message", "")
+hit = re.search(r"last load factor reached: ([0-9.eE+-]+)", msg)
+t = float(hit.group(1)) if hit else (1.0 if s.get("converged") else float("nan"))
+text = open(log).read()
+cuts = text.count("cutting the step")
+rows = [l.split() for l in open(out + "/statistics.txt") if not l.startswith("#")]
+# columns: step, load factor, Newton iterations, residual, then u_x, u_y of
+# every point in the order of 'Points' (n0_0, n1_0, ...), then wall time
+with open(hist, "w") as h:
+    h.write("# %s: load factor, max u_x, max -u_y over all nodes; then u_x u_y of every node (i fastest, %d x %d nodes)\n" % (name, n + 1, m + 1))
+    for r in rows:
+        u = [float(v) for v in r[4:4 + 2 * (n + 1) * (m + 1)]]
+        ux, uy = u[0::2], u[1::2]
+        h.write("%s %.6g %.6g %s\n" % (r[1], max(ux), -min(uy), " ".join(r[4:4 + 2 * (n + 1) * (m + 1)])))
+last = rows[-1]
+u = [float(v) for v in last[4:4 + 2 * (n + 1) * (m + 1)]]
+short = msg.split(". ")[0] if msg else "finished"
+print("%s | %d | %.4f | %.1f | %s | %.4f | %.4f | %d | %d | %d | %.1f | %s | %s" % (
+    name, s["n_dofs"], t, 100 * (1 - t), last[1], max(u[0::2]), -min(u[1::2]),
+    s["load_steps"], cuts, s["newton_iterations"], s["timing"]["total"], rc, short))
+END
+  tail -n 1 "$RESULTS"
+done
+rm -rf "$WORK"
+
+/usr/bin/env python3 - "$OUT" "$FIG" "$N" "$M" <<'END'
+import glob, os, sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+out, fig_path, n, m = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
+res = [l.split(" | ") for l in open(out + "/results.txt") if not l.startswith("#")]
+source = {"FEM": 39.0, "VCBCPPG V3sn Unl": 28.0, "VCBCPBG V5sn Unl": 1.3}
+hist = {}
+for r in res:
+    rows = [l.split() for l in open(out + "/history_%s.txt" % r[0].replace(" ", "_")) if not l.startswith("#")]
+    hist[r[0]] = rows
+show = [r[0] for r in res if r[0] in ("FEM", "VCBCPBG V5sn Unl")]
+fig, ax = plt.subplots(1, 2 + len(show), figsize=(5 * (2 + len(show)), 4.2))
+for name, rows in hist.items():
+    ax[0].plot([float(r[2]) for r in rows], [float(r[1]) for r in rows], label=name)
+ax[0].set_xlabel("max $-u_y$ (= $-\\bar u$)")
+ax[0].set_ylabel("max $u_x$")
+ax[0].set_title("max $u_x$ against max $-u_y$ (load history)")
+ax[0].legend(fontsize=8)
+names = [r[0] for r in res]
+x = range(len(names))
+ax[1].bar([i - 0.2 for i in x], [float(r[3]) for r in res], 0.4, label="pg")
+ax[1].bar([i + 0.2 for i in x], [source.get(nm, float("nan")) for nm in names], 0.4, label="source (B, 7.3.1)")
+ax[1].set_xticks(list(x))
+ax[1].set_xticklabels([nm.replace("VCBC", "VCBC\n") for nm in names], fontsize=7)
+ax[1].set_ylabel("remaining thickness at failure (%)")
+ax[1].set_title("remaining thickness 1 + $\\bar u$ at the last step reached")
+ax[1].legend(fontsize=8)
+for a, name in zip(ax[2:], show):
+    r = hist[name][-1]
+    u = [float(v) for v in r[3:]]
+    X = lambda i, j: 2.0 * i / n + u[2 * (j * (n + 1) + i)]
+    Y = lambda i, j: 1.0 * j / m + u[2 * (j * (n + 1) + i) + 1]
+    for j in range(m + 1):
+        a.plot([X(i, j) for i in range(n + 1)], [Y(i, j) for i in range(n + 1)], "k-", lw=0.4)
+    for i in range(n + 1):
+        a.plot([X(i, j) for j in range(m + 1)], [Y(i, j) for j in range(m + 1)], "k-", lw=0.4)
+    a.set_aspect("equal")
+    a.set_title("%s at t = %s (last completed step)" % (name, r[0]), fontsize=9)
+fig.tight_layout()
+fig.savefig(fig_path, dpi=120)
+END
+echo "wrote $RESULTS and $FIG"
