@@ -13,7 +13,7 @@ namespace pg
       "the VC correction function V1 ... V5 (default V3 for PPG, V5 for "
       "PBG, V1 for VC2) and its boundary option <b> = p, s or sn (default "
       "sn; VC2 takes s), and <points> = Unl (default), U1 (PBG only), U2, "
-      "UnlP0 (mixed, PBG or PPG), U2P1 (mixed, PBG only) or U1SUnl "
+      "UnlP0 (mixed, PBG or PPG), U2P1 (mixed, PBG only), U1SUnl or U1SIG "
       "(stabilised U1, PBG only). "
       "The bond correction BC is the default of Unl; 'noBC' switches it "
       "off. E.g. 'VCPPG V3sn Unl' (= 'VCBCPPG V3sn Unl TL'), 'VCPBG Unl' "
@@ -82,6 +82,7 @@ namespace pg
       text += (p0                                                   ? " UnlP0" :
                code.fields == FormulationCode::Fields::condensed_p1 ? " U2P1" :
                code.points == Points::unl                           ? " Unl" :
+               code.points == Points::u1 && code.implicit_gradients ? " U1SIG" :
                code.points == Points::u1                            ? " U1" :
                code.points == Points::u2                            ? " U2" :
                                                                       " U1SUnl");
@@ -253,20 +254,21 @@ namespace pg
       {
         const std::string &w = words[i];
         if (w == "Unl" || w == "U1" || w == "U2" || w == "UnlP0" ||
-            w == "U2P1" || w == "U1SUnl")
+            w == "U2P1" || w == "U1SUnl" || w == "U1SIG")
           {
             if (have_points)
               reject(code, "it names two formulations.");
             have_points = true;
             result.points =
-              (w == "U1"                  ? FormulationCode::Points::u1 :
-               (w == "U2" || w == "U2P1") ? FormulationCode::Points::u2 :
-               w == "U1SUnl"              ? FormulationCode::Points::u1s_unl :
-                                            FormulationCode::Points::unl);
+              ((w == "U1" || w == "U1SIG") ? FormulationCode::Points::u1 :
+               (w == "U2" || w == "U2P1")  ? FormulationCode::Points::u2 :
+               w == "U1SUnl"               ? FormulationCode::Points::u1s_unl :
+                                             FormulationCode::Points::unl);
             if (w == "UnlP0")
               result.fields = FormulationCode::Fields::condensed_p0;
             if (w == "U2P1")
               result.fields = FormulationCode::Fields::condensed_p1;
+            result.implicit_gradients = (w == "U1SIG");
           }
         else if (w == "noBC")
           {
@@ -370,6 +372,11 @@ namespace pg
              "volumetric point at the master only, where a linear field "
              "is undetermined. U2P1 is a PBG formulation: write 'VCPBG "
              "U2P1'.");
+    if (result.implicit_gradients &&
+        result.method != FormulationCode::Method::pbg)
+      reject(code,
+             "U1SIG (eqs. 6.21-6.28) stabilises the underintegrated PBG U1 "
+             "with implicit gradients; use 'VCPBG U1SIG'.");
     if (result.points == FormulationCode::Points::u1 &&
         result.method != FormulationCode::Method::pbg)
       reject(code,

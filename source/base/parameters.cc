@@ -329,7 +329,8 @@ namespace pg
       const FormulationCode code =
         parse_formulation_code(discretization.formulation);
       AssertThrow(discretization.hourglass_coefficient == 0. ||
-                    code.points == FormulationCode::Points::u1,
+                    (code.points == FormulationCode::Points::u1 &&
+                     !code.implicit_gradients),
                   ExcBadParameter(
                     "Discretization/Hourglass coefficient",
                     Utilities::to_string(discretization.hourglass_coefficient),
@@ -339,8 +340,16 @@ namespace pg
                       code.text +
                       ">. Use 'Formulation = PBG U1' (Peridigm's "
                       "correspondence) or set the coefficient to 0; "
-                      "'VCPBG U1SUnl' is the dissertation's stabilised "
-                      "U1."));
+                      "'VCPBG U1SUnl' and 'VCPBG U1SIG' are the "
+                      "dissertation's stabilised U1 (without an hourglass "
+                      "force)."));
+      AssertThrow(discretization.self_weight_distance > 0.,
+                  ExcBadParameter(
+                    "Discretization/Self-weight distance",
+                    Utilities::to_string(discretization.self_weight_distance),
+                    "the master's weight in U1SIG's MLS1 second derivatives "
+                    "is that of a member at this distance; it must be "
+                    "positive (default 0.001)."));
       if (code.condensed_fields())
         {
           AssertThrow(material.model == "isochoric-volumetric neo-Hooke" ||

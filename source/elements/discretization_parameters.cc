@@ -111,6 +111,17 @@ namespace pg
           "Peridigm's deformation gradient has the weight omega = 1: set "
           "'Weight exponent = 0' to reproduce it. doc/element-view.md "
           "explains the differences to U1SUnl.");
+        prm.declare_entry(
+          "Self-weight distance",
+          "0.001",
+          Patterns::Double(0.),
+          "U1SIG only: the MLS1 second derivatives of its implicit "
+          "gradients (eq. 6.28) give the master the weight of a member at "
+          "this distance, in units of the family's shortest bond, instead "
+          "of the exception 0 (the source's 'modified weight function "
+          "exception of 1000 times the particle spacing', read as a "
+          "self-bond of 1/1000 of the spacing: nearly interpolating at the "
+          "master; doc/ambiguities.md). Must be > 0.");
       }
       prm.leave_subsection();
     }
@@ -170,6 +181,7 @@ namespace pg
         nearest_neighbours    = prm.get_integer("Nearest neighbours");
         weight_exponent       = prm.get_double("Weight exponent");
         hourglass_coefficient = prm.get_double("Hourglass coefficient");
+        self_weight_distance  = prm.get_double("Self-weight distance");
       }
       prm.leave_subsection();
     }

@@ -147,15 +147,21 @@ namespace pg
   FamilyGroup<dim>::set_stabilisation(
     const U1Stabilisation<dim> &new_stabilisation)
   {
-    Assert((new_stabilisation.tables == nullptr ||
-            (new_stabilisation.tables->size() == family_tables.size() &&
-             new_stabilisation.pseudo_material != nullptr &&
-             material.n_state_variables() == 0)) &&
-             (new_stabilisation.hourglass_constants.empty() ||
-              new_stabilisation.hourglass_constants.size() ==
-                family_tables.size()) &&
-             condensed_pressure == nullptr,
-           ExcInternalError());
+    Assert(
+      (new_stabilisation.tables == nullptr ||
+       (new_stabilisation.tables->size() == family_tables.size() &&
+        new_stabilisation.pseudo_material != nullptr &&
+        material.n_state_variables() == 0)) &&
+        (new_stabilisation.hourglass_constants.empty() ||
+         new_stabilisation.hourglass_constants.size() ==
+           family_tables.size()) &&
+        (new_stabilisation.implicit_gradients.empty() ||
+         (new_stabilisation.implicit_gradients.size() == family_tables.size() &&
+          new_stabilisation.second_moments.size() == family_tables.size() &&
+          new_stabilisation.pseudo_material != nullptr &&
+          material.n_state_variables() == 0)) &&
+        condensed_pressure == nullptr,
+      ExcInternalError());
     stabilisation = new_stabilisation;
   }
 
@@ -169,6 +175,8 @@ namespace pg
              (condensed_pressure_degree == 1 ? "PG families (U2P1)" :
                                                "PG families (UnlP0)") :
            stabilisation.tables != nullptr ? "PG families (U1SUnl)" :
+           !stabilisation.implicit_gradients.empty() ?
+                                             "PG families (U1SIG)" :
            !stabilisation.hourglass_constants.empty() ?
                                              "PG families (U1, hourglass)" :
                                              "PG families";
@@ -267,6 +275,30 @@ namespace pg
                             stabilisation.hourglass_constants[e],
                             local.residual,
                             tangent);
+      }
+    if (!stabilisation.implicit_gradients.empty())
+      {
+        // A~ at the master's F of the last accepted step (the committed
+        // history); the trial history gets this iterate's F
+        AssertDimension(history.committed.size(), dim * dim);
+        Tensor<2, dim> F_accepted;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            F_accepted[i][j] = history.committed[i * dim + j];
+        Tensor<2, dim> P;
+        Tensor<4, dim> A;
+        stabilisation.pseudo_material->evaluate(F_accepted, P, A);
+        add_implicit_gradient_stabilisation(stabilisation.implicit_gradients[e],
+                                            stabilisation.second_moments[e],
+                                            A,
+                                            scratch.y,
+                                            local.residual,
+                                            tangent);
+        const Tensor<2, dim> F =
+          deformation_gradient(family_tables[e], 0, scratch.y);
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            history.trial[i * dim + j] = F[i][j];
       }
   }
 

@@ -121,6 +121,89 @@ namespace pg
 
 
 
+  template <int dim>
+  double
+  particle_second_moment(const double volume)
+  {
+    if (dim == 3)
+      return std::pow(3. / numbers::PI, 2. / 3.) /
+             (10. * std::pow(2., 1. / 3.)) * std::pow(volume, 5. / 3.);
+    return volume * volume / (4. * numbers::PI);
+  }
+
+
+
+  template <int dim>
+  void
+  add_implicit_gradient_stabilisation(const std::vector<Tensor<2, dim>> &h,
+                                      const double          second_moment,
+                                      const Tensor<4, dim> &A,
+                                      const std::vector<Tensor<1, dim>> &y,
+                                      Vector<double>     &residual,
+                                      FullMatrix<double> *tangent)
+  {
+    const unsigned int n = h.size();
+    AssertDimension(y.size(), n);
+    AssertDimension(residual.size(), n * dim);
+    // G_{CDE} = sum_b y^b_C h^b_{DE}, and S_{ABE} = M A_{ABCD} G_{CDE}
+    Tensor<3, dim> G;
+    for (unsigned int b = 0; b < n; ++b)
+      for (unsigned int C = 0; C < dim; ++C)
+        for (unsigned int D = 0; D < dim; ++D)
+          for (unsigned int E = 0; E < dim; ++E)
+            G[C][D][E] += y[b][C] * h[b][D][E];
+    Tensor<3, dim> S;
+    for (unsigned int A_ = 0; A_ < dim; ++A_)
+      for (unsigned int B = 0; B < dim; ++B)
+        for (unsigned int E = 0; E < dim; ++E)
+          {
+            double value = 0;
+            for (unsigned int C = 0; C < dim; ++C)
+              for (unsigned int D = 0; D < dim; ++D)
+                value += A[A_][B][C][D] * G[C][D][E];
+            S[A_][B][E] = second_moment * value;
+          }
+    for (unsigned int a = 0; a < n; ++a)
+      for (unsigned int A_ = 0; A_ < dim; ++A_)
+        {
+          double value = 0;
+          for (unsigned int B = 0; B < dim; ++B)
+            for (unsigned int E = 0; E < dim; ++E)
+              value += h[a][B][E] * S[A_][B][E];
+          residual[a * dim + A_] += value;
+        }
+    if (tangent == nullptr)
+      return;
+    // K_{aA,bC} = M h^a_{BE} A_{ABCD} h^b_{DE}: first T^b_{ABCE} =
+    // A_{ABCD} h^b_{DE}
+    Tensor<4, dim> T;
+    for (unsigned int b = 0; b < n; ++b)
+      {
+        for (unsigned int A_ = 0; A_ < dim; ++A_)
+          for (unsigned int B = 0; B < dim; ++B)
+            for (unsigned int C = 0; C < dim; ++C)
+              for (unsigned int E = 0; E < dim; ++E)
+                {
+                  double value = 0;
+                  for (unsigned int D = 0; D < dim; ++D)
+                    value += A[A_][B][C][D] * h[b][D][E];
+                  T[A_][B][C][E] = second_moment * value;
+                }
+        for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int A_ = 0; A_ < dim; ++A_)
+            for (unsigned int C = 0; C < dim; ++C)
+              {
+                double value = 0;
+                for (unsigned int B = 0; B < dim; ++B)
+                  for (unsigned int E = 0; E < dim; ++E)
+                    value += h[a][B][E] * T[A_][B][C][E];
+                (*tangent)(a * dim + A_, b * dim + C) += value;
+              }
+      }
+  }
+
+
+
   template void
   assemble_u1s_unl_element(const QuadratureTable<2> &,
                            const QuadratureTable<2> &,
@@ -155,4 +238,22 @@ namespace pg
                       const double,
                       Vector<double> &,
                       FullMatrix<double> *);
+  template double
+  particle_second_moment<2>(const double);
+  template double
+  particle_second_moment<3>(const double);
+  template void
+  add_implicit_gradient_stabilisation<2>(const std::vector<Tensor<2, 2>> &,
+                                         const double,
+                                         const Tensor<4, 2> &,
+                                         const std::vector<Tensor<1, 2>> &,
+                                         Vector<double> &,
+                                         FullMatrix<double> *);
+  template void
+  add_implicit_gradient_stabilisation<3>(const std::vector<Tensor<2, 3>> &,
+                                         const double,
+                                         const Tensor<4, 3> &,
+                                         const std::vector<Tensor<1, 3>> &,
+                                         Vector<double> &,
+                                         FullMatrix<double> *);
 } // namespace pg

@@ -55,9 +55,12 @@ namespace pg
                   formulation.fields == FormulationCode::Fields::condensed_p1 ?
                            "U2P1" :
                   formulation.points == FormulationCode::Points::unl ? "Unl" :
-                  formulation.points == FormulationCode::Points::u1  ? "U1" :
-                  formulation.points == FormulationCode::Points::u2  ? "U2" :
-                                                                       "U1SUnl")
+                  formulation.points == FormulationCode::Points::u1 &&
+                      formulation.implicit_gradients ?
+                                                                       "U1SIG" :
+                  formulation.points == FormulationCode::Points::u1 ? "U1" :
+                  formulation.points == FormulationCode::Points::u2 ? "U2" :
+                                                                      "U1SUnl")
               << ", "
               << (formulation.points == FormulationCode::Points::u2 ?
                     std::string("WTE2") :
@@ -72,6 +75,12 @@ namespace pg
               << (prm.material.poissons_ratio > 0.49 ?
                     "" :
                     " = nu: the families equal Unl (eq. 6.18)");
+      if (formulation.implicit_gradients)
+        pcout << "\n  U1SIG:           A~ of nu~ = "
+              << std::min(0.49, prm.material.poissons_ratio)
+              << ", frozen per load step; MLS1 self-weight at "
+              << prm.discretization.self_weight_distance
+              << " x the shortest bond";
       if (prm.discretization.hourglass_coefficient > 0.)
         pcout << "\n  hourglass:       coefficient "
               << prm.discretization.hourglass_coefficient

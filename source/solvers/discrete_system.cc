@@ -6,6 +6,7 @@
 #include <pg/elements/unit_stress_residual.h>
 #include <pg/postprocess/problem_view.h>
 #include <pg/problem.h>
+#include <pg/shape_functions/shape_functions.h>
 #include <pg/solvers/discrete_system.h>
 #include <pg/solvers/linear_solver.h>
 
@@ -137,12 +138,14 @@ namespace pg
             discretization.family_elements.get() :
             nullptr,
           formulation.condensed_pressure_degree());
+        // eq. (6.20) without plasticity: E~ = E, nu~ = min(0.49, nu)
+        const double nu = prm.material.poissons_ratio;
+        if (formulation.points == FormulationCode::Points::u1s_unl ||
+            formulation.implicit_gradients)
+          pseudo_material = Materials::create_material<dim>(
+            prm.material.with_poissons_ratio(std::min(0.49, nu)));
         if (formulation.points == FormulationCode::Points::u1s_unl)
           {
-            // eq. (6.20) without plasticity: E~ = E, nu~ = min(0.49, nu)
-            const double nu = prm.material.poissons_ratio;
-            pseudo_material = Materials::create_material<dim>(
-              prm.material.with_poissons_ratio(std::min(0.49, nu)));
             U1Stabilisation<dim> stabilisation;
             stabilisation.tables = &discretization.stabilisation_tables;
             stabilisation.pseudo_material = pseudo_material.get();
@@ -151,6 +154,8 @@ namespace pg
           }
         if (prm.discretization.hourglass_coefficient > 0.)
           families->set_stabilisation(hourglass_stabilisation());
+        if (formulation.implicit_gradients)
+          families->set_stabilisation(implicit_gradient_stabilisation());
         family_group = std::move(families);
       }
     assembler = std::make_unique<Assembler<dim>>(
@@ -180,11 +185,22 @@ namespace pg
 
     // The state at every evaluation point of every group (the tables are
     // final now: the VC correction keeps their points).
-    history.reinit(assembler->evaluation_points(),
-                   material.n_state_variables(),
-                   [this](const ArrayView<double> &state) {
-                     material.initialize_state(state);
-                   });
+    // (U1SIG: the master's F of the last accepted step, dim^2 values,
+    // initially 1; its material is stateless)
+    if (formulation.implicit_gradients)
+      history.reinit(assembler->evaluation_points(),
+                     dim * dim,
+                     [](const ArrayView<double> &state) {
+                       for (unsigned int i = 0; i < dim; ++i)
+                         for (unsigned int j = 0; j < dim; ++j)
+                           state[i * dim + j] = (i == j ? 1. : 0.);
+                     });
+    else
+      history.reinit(assembler->evaluation_points(),
+                     material.n_state_variables(),
+                     [this](const ArrayView<double> &state) {
+                       material.initialize_state(state);
+                     });
     assembler->set_history(&history);
   }
 
@@ -203,6 +219,50 @@ namespace pg
         hourglass_constant(prm.discretization.hourglass_coefficient,
                            K,
                            discretization.families.horizon(k)));
+    return stabilisation;
+  }
+
+
+
+  template <int dim>
+  U1Stabilisation<dim>
+  DiscreteSystem<dim>::implicit_gradient_stabilisation() const
+  {
+    AssertThrow(material.n_state_variables() == 0, ExcNotImplemented());
+    const auto          &particles = discretization.particles;
+    U1Stabilisation<dim> stabilisation;
+    stabilisation.pseudo_material = pseudo_material.get();
+    const double distance         = prm.discretization.self_weight_distance;
+    for (const unsigned int k : discretization.owned_families)
+      {
+        const ShapeFunctions::FamilyGeometry<dim> family =
+          discretization.family_elements->geometry(k);
+        double shortest = std::numeric_limits<double>::max();
+        for (unsigned int i = 1; i < family.bonds.size(); ++i)
+          shortest = std::min(shortest, family.bonds[i].norm());
+        const double self_weight =
+          std::pow(distance * shortest, -2. * family.weight_exponent);
+        std::vector<Tensor<2, dim>> h;
+        const double                condition =
+          ShapeFunctions::mls1_second_derivatives(family, self_weight, h);
+        if (!(condition <= FamilyElements<dim>::maximum_condition_number))
+          {
+            std::ostringstream where, detail;
+            where << "(" << particles.position(k) << ")";
+            detail << " for the MLS1 second derivatives of U1SIG "
+                      "(condition number "
+                   << condition << " > "
+                   << FamilyElements<dim>::maximum_condition_number << ")";
+            AssertThrow(false,
+                        ExcSingularFamily(k,
+                                          where.str(),
+                                          family.bonds.size() - 1,
+                                          detail.str()));
+          }
+        stabilisation.implicit_gradients.push_back(std::move(h));
+        stabilisation.second_moments.push_back(
+          particle_second_moment<dim>(particles.volume(k)));
+      }
     return stabilisation;
   }
 

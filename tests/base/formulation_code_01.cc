@@ -57,11 +57,14 @@ main()
                                  "VCPPG U2",
                                  "VC2PPG V4s U2",
                                  "VCPBG U2P1",
-                                 "PBG U2P1"})
+                                 "PBG U2P1",
+                                 "VCPBG U1SIG",
+                                 "PBG U1SIG"})
     {
       const FormulationCode f     = parse_formulation_code(code);
       const FormulationCode again = parse_formulation_code(f.text);
       const bool            same =
+        again.implicit_gradients == f.implicit_gradients &&
         again.text == f.text && again.bond_correction == f.bond_correction &&
         again.method == f.method && again.points == f.points &&
         again.variational_consistency == f.variational_consistency &&
@@ -84,7 +87,7 @@ main()
         "VCPPG2 V3sn UnlP0", "PBG UnlP0 Unl",  "PBG IUnlP0",
         "VCPPG U2P1",        "FEM Q2",         "FEM Q1P0 H1P0",
         "BCPBG U2P1",        "PBG U2P1 U2",    "VCPPG U1SUnl",
-        "PBG U1SIG",         "VC2PPG V2s U2"})
+        "VCPPG U1SIG",       "VC2PPG V2s U2",  "BCPBG U1SIG"})
     try
       {
         parse_formulation_code(code);

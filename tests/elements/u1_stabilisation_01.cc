@@ -12,11 +12,20 @@
 //   neighbour's -= magnitude Y V_k), the tangent agrees with central
 //   differences, the force vanishes for every affine field (a homogeneous
 //   stretch and shear, rotated) and sums to zero, and the tangent is not
-//   symmetric (the force has no energy).
+//   symmetric (the force has no energy);
+// - U1SIG's implicit-gradient term (eqs. 6.25-6.28) with the MLS1 second
+//   derivatives of every family and the tangent A~ of the pseudo-material
+//   at a random F: the residual equals central differences of the energy
+//   1/2 M_xx sum_E G_E : A~ : G_E (G = sum_b y^b (x) h^b, written out
+//   here), the tangent central differences of the residual and is
+//   symmetric, and affine fields give zero; M_xx is the second moment of
+//   a ball (3-D) or disc (2-D) of the particle's volume, checked against
+//   V r^2 / 5 and A r^2 / 4.
 
 #include <pg/base/formulation_code.h>
 #include <pg/elements/family_elements.h>
 #include <pg/elements/u1_stabilisation.h>
+#include <pg/shape_functions/shape_functions.h>
 
 #include "../particle_fixture.h"
 #include "../tests.h"
@@ -281,10 +290,133 @@ test()
 
 
 
+template <int dim>
+void
+test_implicit_gradients()
+{
+  const ParticleFixture<dim> fixture(dim == 2 ? 6 : 4,
+                                     0.25,
+                                     dim == 2 ? 2.51 : 2.01);
+  const double                           h = 1. / (dim == 2 ? 6 : 4);
+  std::mt19937                           rng(7);
+  std::uniform_real_distribution<double> random(-1., 1.);
+  Parameters::Material                   parameters;
+  parameters.model          = "neo-Hooke";
+  parameters.youngs_modulus = 100.;
+  parameters.poissons_ratio = 0.49;
+  parameters.density        = 1.;
+  parameters.plane          = "strain";
+  const auto     pseudo     = Materials::create_material<dim>(parameters);
+  Tensor<2, dim> F_frozen   = unit_symmetric_tensor<dim>();
+  for (unsigned int i = 0; i < dim; ++i)
+    for (unsigned int j = 0; j < dim; ++j)
+      F_frozen[i][j] += 0.1 * random(rng);
+  Tensor<2, dim> P;
+  Tensor<4, dim> A;
+  pseudo->evaluate(F_frozen, P, A);
+
+  double tangent = 0, energy = 0, symmetry = 0, affine = 0;
+  for (unsigned int k = 0; k < fixture.particles.n_particles(); ++k)
+    {
+      ShapeFunctions::FamilyGeometry<dim> family;
+      family.weight_exponent = 1.;
+      for (const unsigned int j : fixture.families.members(k))
+        {
+          family.bonds.push_back(fixture.particles.position(j) -
+                                 fixture.particles.position(k));
+          family.volumes.push_back(fixture.particles.volume(j));
+        }
+      std::vector<Tensor<2, dim>> second;
+      ShapeFunctions::mls1_second_derivatives(family,
+                                              std::pow(1e-3 * h, -2.),
+                                              second);
+      const double M = particle_second_moment<dim>(fixture.particles.volume(k));
+      const unsigned int n           = second.size();
+      const auto         residual_of = [&](const std::vector<Tensor<1, dim>> &y,
+                                   Vector<double>                    &r) {
+        r.reinit(n * dim);
+        add_implicit_gradient_stabilisation(second, M, A, y, r, nullptr);
+      };
+      const auto energy_of = [&](const std::vector<Tensor<1, dim>> &y) {
+        double Pi = 0;
+        for (unsigned int E = 0; E < dim; ++E)
+          {
+            Tensor<2, dim> G;
+            for (unsigned int b = 0; b < n; ++b)
+              for (unsigned int C = 0; C < dim; ++C)
+                for (unsigned int D = 0; D < dim; ++D)
+                  G[C][D] += y[b][C] * second[b][D][E];
+            Pi +=
+              0.5 * M * scalar_product(G, double_contract<2, 0, 3, 1>(A, G));
+          }
+        return Pi;
+      };
+      std::vector<Tensor<1, dim>> y(family.bonds);
+      for (auto &v : y)
+        for (unsigned int c = 0; c < dim; ++c)
+          v[c] += 0.05 * h * random(rng);
+      Vector<double>     r(n * dim);
+      FullMatrix<double> K(n * dim, n * dim);
+      add_implicit_gradient_stabilisation(second, M, A, y, r, &K);
+      tangent = std::max(tangent, tangent_error<dim>(y, K, h, residual_of));
+      double       fd_error = 0;
+      const double eps      = 1e-6 * h;
+      for (unsigned int b = 0; b < n; ++b)
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            y[b][c] += eps;
+            const double plus = energy_of(y);
+            y[b][c] -= 2 * eps;
+            const double minus = energy_of(y);
+            y[b][c] += eps;
+            fd_error =
+              std::max(fd_error,
+                       std::abs((plus - minus) / (2 * eps) - r[b * dim + c]));
+          }
+      energy = std::max(energy, fd_error / r.linfty_norm());
+      for (unsigned int i = 0; i < n * dim; ++i)
+        for (unsigned int j = 0; j < n * dim; ++j)
+          symmetry =
+            std::max(symmetry, std::abs(K(i, j) - K(j, i)) / K.linfty_norm());
+      // an affine field (a random F and translation): zero
+      Tensor<2, dim> G = unit_symmetric_tensor<dim>();
+      G[0][1]          = 0.3;
+      G[1][0]          = -0.2;
+      std::vector<Tensor<1, dim>> moved(n);
+      for (unsigned int b = 0; b < n; ++b)
+        moved[b] =
+          G * family.bonds[b] + Tensor<1, dim>(Point<dim>::unit_vector(0));
+      Vector<double> zero(n * dim);
+      add_implicit_gradient_stabilisation(second, M, A, moved, zero, nullptr);
+      affine = std::max(affine, zero.linfty_norm() / r.linfty_norm());
+    }
+  // M_xx of a ball / disc of volume 2
+  const double V      = 2.;
+  const double radius = dim == 3 ? std::cbrt(3. * V / (4. * numbers::PI)) :
+                                   std::sqrt(V / numbers::PI);
+  const double exact =
+    (dim == 3 ? V * radius * radius / 5. : V * radius * radius / 4.);
+  const auto verdict = [](const double value, const double bound) {
+    return value <= bound ? std::string("yes") :
+                            "NO (" + std::to_string(value) + ")";
+  };
+  deallog << dim << "d U1SIG: r = FD(energy): " << verdict(energy, 1e-7)
+          << ", tangent = FD: " << verdict(tangent, 1e-6)
+          << ", symmetric: " << verdict(symmetry, 1e-13)
+          << ", affine fields: " << verdict(affine, 1e-11) << ", M_xx: "
+          << verdict(std::abs(particle_second_moment<dim>(V) - exact) / exact,
+                     1e-14)
+          << std::endl;
+}
+
+
+
 int
 main()
 {
   initlog();
   test<2>();
   test<3>();
+  test_implicit_gradients<2>();
+  test_implicit_gradients<3>();
 }

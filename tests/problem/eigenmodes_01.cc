@@ -35,6 +35,11 @@
 // U2), at nu = 0.4 and 0.4999: the rigid modes only, no negative
 // eigenvalue; the first eigenvalues measure how much each locks.
 //
+// The implicit-gradient stabilised U1 (U1SIG, eqs. 6.21-6.28; MLS1
+// second derivatives with the self-weight of a bond of 1/1000 of the
+// shortest one, A~ of the pseudo-material at F = 1): how many of U1's 82
+// spurious low modes it removes, with and without VC.
+//
 // A finding printed as well: VC-corrected PPG *without* BC has negative
 // eigenvalues (an unstable tangent), which is why it can converge to
 // spurious equilibria under finite strain (homogeneous_deformation_01).
@@ -73,7 +78,10 @@ main(int argc, char **argv)
                                  "VCPBG U2",
                                  "VCPBG U2P1",
                                  "VCPBG U2 @ 0.4999",
-                                 "VCPBG U2P1 @ 0.4999"})
+                                 "VCPBG U2P1 @ 0.4999",
+                                 "PBG U1SIG",
+                                 "VCPBG U1SIG",
+                                 "VCPBG U1SIG @ 0.4999"})
     {
       // "<code> @ <nu>": the same block at another Poisson's ratio;
       // "<code> hg <alpha>": with 'Hourglass coefficient = alpha'

@@ -87,6 +87,11 @@ namespace pg
     Method method;
     Points points;
     /**
+     * U1SIG (eqs. 6.21-6.28, pg-methods.md section 12.3.3): the U1 families
+     * (points = u1) with the implicit-gradient stabilisation
+     */
+    bool implicit_gradients = false;
+    /**
      * The mixed fields. They also decide the FE cells of a coupled model:
      * Q1P0/H1P0 cells with UnlP0 families, Q1 cells otherwise.
      */

@@ -37,6 +37,11 @@ namespace pg
        * hourglass force), elements/u1_stabilisation.h.
        */
       double hourglass_coefficient = 0;
+      /**
+       * U1SIG: the master's weight in the MLS1 second derivatives is that
+       * of a member at this distance (units of the shortest bond).
+       */
+      double self_weight_distance = 1e-3;
 
       static void
       declare_parameters(ParameterHandler &prm);

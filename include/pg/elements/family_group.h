@@ -65,14 +65,21 @@ namespace pg
    * - U1SUnl (eq. 6.18, pg-methods.md section 12.3.2): family k adds the
    *   pseudo-material W~ (constants of eq. 6.20) on the Unl table of its
    *   members and subtracts it at its master;
-   * - Peridigm's hourglass force ('Hourglass coefficient' > 0).
+   * - Peridigm's hourglass force ('Hourglass coefficient' > 0);
+   * - U1SIG (eqs. 6.21-6.28, pg-methods.md section 12.3.3): the implicit-
+   *   gradient energy 1/2 M_xx grad F : A~ : grad F with A~ the tangent of
+   *   W~ at the master's deformation gradient of the last accepted step
+   *   (frozen per load step; stored in the point history, dim^2 values).
    */
   template <int dim>
   struct U1Stabilisation
   {
     /** U1SUnl: the Unl tables (Discretization::stabilisation_tables). */
     const std::vector<QuadratureTable<dim>> *tables = nullptr;
-    /** U1SUnl: W~, with E~ = E (no plasticity yet), nu~ = min(0.49, nu). */
+    /**
+     * U1SUnl and U1SIG: W~, with E~ = E (no plasticity yet),
+     * nu~ = min(0.49, nu).
+     */
     const Materials::Material<dim> *pseudo_material = nullptr;
     /**
      * U1SUnl: false if W~ = W (nu <= 0.49); then the master terms cancel
@@ -85,6 +92,14 @@ namespace pg
      * family (hourglass_constant()); empty: no hourglass force.
      */
     std::vector<double> hourglass_constants;
+    /**
+     * U1SIG: the MLS1 second derivatives h^b at the master of every owned
+     * family (ShapeFunctions::mls1_second_derivatives(), node order of the
+     * family); empty: no implicit-gradient stabilisation.
+     */
+    std::vector<std::vector<Tensor<2, dim>>> implicit_gradients;
+    /** U1SIG: M_xx of every owned family (particle_second_moment()). */
+    std::vector<double> second_moments;
   };
 
 

@@ -92,6 +92,39 @@ namespace pg
                       const double                       constant,
                       Vector<double>                    &residual,
                       FullMatrix<double>                *tangent);
+
+  /**
+   * The second moment M_xx = int_{V^k} x^2 dV of a particle volume taken as
+   * a ball (eq. 6.27, [checked]: V r^2 / 5 of a sphere, V^{5/3} (3/pi)^{2/3}
+   * / (10 2^{1/3})) or, in 2-D, a disc of area V per unit thickness:
+   * V^2 / (4 pi) (pg-methods.md section 12.3.3, [D]; the source gives 3-D
+   * only). Units: length^(dim + 2).
+   */
+  template <int dim>
+  double
+  particle_second_moment(const double volume);
+
+  /**
+   * Add U1SIG's implicit-gradient stabilisation of a U1 family (eqs.
+   * 6.25, 6.26, 6.28; pg-methods.md section 12.3.3): with the second
+   * derivatives @p h (h^b_{DE}, ShapeFunctions::mls1_second_derivatives(),
+   * in the node order of @p y) the gradient of the deformation gradient at
+   * the master is G_{CDE} = sum_b y^b_C h^b_{DE}, and the quadratic energy
+   * 1/2 M_xx sum_E G_{..E} : A : G_{..E} with the frozen tangent @p A
+   * (force / area) gives
+   *   r_aA += M_xx h^a_{BE} A_{ABCD} G_{CDE},
+   *   K_{aA,bC} += M_xx h^a_{BE} A_{ABCD} h^b_{DE}.
+   * Both vanish for every affine field; the tangent is symmetric when A
+   * has the major symmetry. @p tangent may be nullptr. Adds.
+   */
+  template <int dim>
+  void
+  add_implicit_gradient_stabilisation(const std::vector<Tensor<2, dim>> &h,
+                                      const double          second_moment,
+                                      const Tensor<4, dim> &A,
+                                      const std::vector<Tensor<1, dim>> &y,
+                                      Vector<double>     &residual,
+                                      FullMatrix<double> *tangent);
 } // namespace pg
 
 #endif

@@ -261,6 +261,13 @@ namespace pg
     U1Stabilisation<dim>
     hourglass_stabilisation() const;
 
+    /**
+     * U1SIG: the MLS1 second derivatives ('Discretization/Self-weight
+     * distance') and second moments of the owned families, with W~.
+     */
+    U1Stabilisation<dim>
+    implicit_gradient_stabilisation() const;
+
     /** @p target += @p factor C^T y with C of zero_constraints. */
     void
     add_condensed(const LinearAlgebra::Vector &y,
