@@ -5,7 +5,7 @@
 //                                  output directory
 //   pg_solve --print-parameters    print every parameter with its
 //                                  documentation (2-D defaults) and exit
-//   pg_solve --validate file.prm   parse the file and exit
+//   pg_solve --validate file.prm   parse and check the file, and exit
 //   pg_solve --help
 
 #include <pg/base/application.h>
@@ -47,6 +47,13 @@ main(int argc, char *argv[])
           else
             pg::declare_all_parameters<3>(prm);
           pg::Parameters::parse_parameter_file(prm, args[1]);
+          // the checks a run makes before it reads a mesh: entries that
+          // contradict each other (a mixed code on a material without the
+          // volumetric split, an hourglass coefficient on Unl, ...)
+          if (dim == 2)
+            pg::Parameters::AllParameters<2>().parse_parameters(prm);
+          else
+            pg::Parameters::AllParameters<3>().parse_parameters(prm);
           if (root)
             std::cout << args[1] << ": valid" << std::endl;
           return 0;

@@ -6,7 +6,8 @@
 if(DEFINED SUMMARY)
   file(REMOVE ${SUMMARY})
 endif()
-execute_process(COMMAND ${LAUNCHER} ${PG_SOLVE} ${PRM}
+# (${OPTION}, if set, goes before the file, e.g. --validate)
+execute_process(COMMAND ${LAUNCHER} ${PG_SOLVE} ${OPTION} ${PRM}
                 RESULT_VARIABLE code
                 OUTPUT_VARIABLE out
                 ERROR_VARIABLE err)
