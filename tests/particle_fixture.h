@@ -7,6 +7,7 @@
 #include <pg/families/family_set.h>
 #include <pg/materials/material.h>
 #include <pg/mesh/particle_set.h>
+#include <pg/shape_functions/shape_functions.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -64,6 +65,23 @@ struct ParticleFixture
     for (unsigned int d = 0; d < dim; ++d)
       centre[d] = 0.5;
     return {closest(centre), closest(dealii::Point<dim>())};
+  }
+
+  /**
+   * The family of particle @p k as the shape functions see it: bonds
+   * X^i - X^k and volumes V^i of its members (master first).
+   */
+  pg::ShapeFunctions::FamilyGeometry<dim>
+  family_geometry(const unsigned int k, const double weight_exponent = 1.) const
+  {
+    pg::ShapeFunctions::FamilyGeometry<dim> family;
+    family.weight_exponent = weight_exponent;
+    for (const unsigned int j : families.members(k))
+      {
+        family.bonds.push_back(particles.position(j) - particles.position(k));
+        family.volumes.push_back(particles.volume(j));
+      }
+    return family;
   }
 
   dealii::Triangulation<dim> tria;

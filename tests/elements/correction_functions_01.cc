@@ -32,14 +32,8 @@ test()
       double zeroth = 0, first = 0, second = 0, hessian = 0, cond = 0;
       for (unsigned int k = 0; k < fixture.particles.n_particles(); ++k)
         {
-          ShapeFunctions::FamilyGeometry<dim> family;
-          family.weight_exponent = 1.;
-          for (const unsigned int j : fixture.families.members(k))
-            {
-              family.bonds.push_back(fixture.particles.position(j) -
-                                     fixture.particles.position(k));
-              family.volumes.push_back(fixture.particles.volume(j));
-            }
+          const ShapeFunctions::FamilyGeometry<dim> family =
+            fixture.family_geometry(k);
           std::vector<Tensor<1, dim>> phi;
           cond     = std::max(cond,
                           ShapeFunctions::correction_function(function,

@@ -69,14 +69,8 @@ test()
         double fd_error = 0, linear_error = 0, largest = 0;
         for (unsigned int k = 0; k < fixture.particles.n_particles(); ++k)
           {
-            ShapeFunctions::FamilyGeometry<dim> family;
-            family.weight_exponent = exponent;
-            for (const unsigned int j : fixture.families.members(k))
-              {
-                family.bonds.push_back(fixture.particles.position(j) -
-                                       fixture.particles.position(k));
-                family.volumes.push_back(fixture.particles.volume(j));
-              }
+            const ShapeFunctions::FamilyGeometry<dim> family =
+              fixture.family_geometry(k, exponent);
             double s = std::numeric_limits<double>::max();
             for (unsigned int i = 1; i < family.bonds.size(); ++i)
               s = std::min(s, family.bonds[i].norm());

@@ -318,14 +318,8 @@ test_implicit_gradients()
   double tangent = 0, energy = 0, symmetry = 0, affine = 0;
   for (unsigned int k = 0; k < fixture.particles.n_particles(); ++k)
     {
-      ShapeFunctions::FamilyGeometry<dim> family;
-      family.weight_exponent = 1.;
-      for (const unsigned int j : fixture.families.members(k))
-        {
-          family.bonds.push_back(fixture.particles.position(j) -
-                                 fixture.particles.position(k));
-          family.volumes.push_back(fixture.particles.volume(j));
-        }
+      const ShapeFunctions::FamilyGeometry<dim> family =
+        fixture.family_geometry(k);
       std::vector<Tensor<2, dim>> second;
       ShapeFunctions::mls1_second_derivatives(family,
                                               std::pow(1e-3 * h, -2.),
