@@ -97,6 +97,7 @@ for N in 4 8 16 32 64; do
   # have an aspect ratio of 3, where 2.51 h holds one column (singular)
   run "VCPBG V5sn U2" "VCPBG V5sn U2" $N all 3.51
   run "VCPBG V5sn U2P1" "VCPBG V5sn U2P1" $N all 3.51
+  run "VCPBG V5sn U1SIG" "VCPBG V5sn U1SIG" $N
 done
 rm -rf "$WORK"
 fi
