@@ -118,6 +118,17 @@ namespace pg
                     "the inf-sup test ('Analysis/Type = inf-sup') solves a "
                     "symmetric generalised eigenproblem, and PPG tangents are "
                     "not symmetric: use a PBG formulation (or FEM)."));
+      AssertThrow(formulation.points != FormulationCode::Points::u1s_unl &&
+                    !formulation.implicit_gradients &&
+                    prm.discretization.hourglass_coefficient == 0.,
+                  ExcBadParameter(
+                    "Discretization/Formulation",
+                    formulation.text,
+                    "the inf-sup test assembles T_h and S_h from the family "
+                    "tables alone, without the stabilisation of U1SUnl, "
+                    "U1SIG or the hourglass force, so it would test PBG U1. "
+                    "Use 'PBG U1' (and 'Hourglass coefficient = 0') to test "
+                    "the underintegrated families."));
       const std::vector<unsigned int> &series =
         prm.analysis.inf_sup_subdivisions;
       const double       tolerance = prm.analysis.inf_sup_zero_tolerance;

@@ -18,8 +18,9 @@ namespace pg
       "The bond correction BC is the default of Unl; 'noBC' switches it "
       "off. E.g. 'VCPPG V3sn Unl' (= 'VCBCPPG V3sn Unl TL'), 'VCPBG Unl' "
       "(= 'VCBCPBG V5sn Unl TL'), 'PBG Unl noBC', 'PBG U1', "
-      "'VC2PPG V1s U2', 'VCPPG V3sn UnlP0', 'VCPBG U1SUnl'; or 'FEM' (Q1/H1), 'FEM Q1P0' "
-      "(H1P0 in 3-D) or 'CPD'.";
+      "'VC2PPG V1s U2', 'VCPPG V3sn UnlP0', 'VCPBG U2P1', 'VCPBG U1SUnl', "
+      "'VCPBG U1SIG'; or 'FEM' (Q1/H1), 'FEM Q1P0' (H1P0 in 3-D) or "
+      "'CPD'.";
 
 
 

@@ -7,7 +7,8 @@
 //   and beta~ decays like h (Chapelle & Bathe 1993): slope in [0.8, 1.2].
 // * Q1 displacement-based (full div-div): locks, slope in [0.9, 1.1].
 // * S_h is positive definite once a side is clamped; a free body and a
-//   PPG formulation are refused with a clear message, as are meshes too
+//   PPG formulation are refused with a clear message, as are a stabilised
+//   U1 (its stabilisation is not in T_h, S_h) and meshes too
 //   big for the dense solver.
 
 #include "../tests.h"
@@ -100,6 +101,11 @@ main(int argc, char **argv)
   check_error("PPG",
               "subsection Geometry\n  set Meshfree region = all\nend\n"
               "subsection Discretization\n  set Formulation = PPG Unl\nend\n"
+              "subsection Analysis\n  set Inf-sup subdivisions = 2\nend\n");
+  check_error("U1SIG",
+              "subsection Geometry\n  set Meshfree region = all\nend\n"
+              "subsection Discretization\n  set Formulation = VCPBG U1SIG\n"
+              "end\n"
               "subsection Analysis\n  set Inf-sup subdivisions = 2\nend\n");
   check_error("too big",
               "subsection Analysis\n  set Inf-sup subdivisions = 2, 64\n"
