@@ -14,8 +14,9 @@
 //   stretch and shear, rotated) and sums to zero, and the tangent is not
 //   symmetric (the force has no energy);
 // - U1SIG's implicit-gradient term (eqs. 6.25-6.28) with the MLS1 second
-//   derivatives of an interior and a corner family and the tangent A~ of the pseudo-material
-//   at a random F: the residual equals central differences of the energy
+//   derivatives of an interior and a corner family and the tangent A~ of
+//   the pseudo-material at a random F: the residual equals central
+//   differences of the energy
 //   1/2 M_xx sum_E G_E : A~ : G_E (G = sum_b y^b (x) h^b, written out
 //   here), the tangent central differences of the residual and is
 //   symmetric, and affine fields give zero; M_xx is the second moment of
