@@ -127,13 +127,16 @@ namespace pg
                                "inf-sup test needs a Bubnov-Galerkin table "
                                "(test = trial)."));
         // linear elasticity with K = 1, mu = 0: W = W_vol = (tr eps)^2 / 2
-        Parameters::Material parameters;
-        parameters.model         = "linear elastic";
-        parameters.plane         = "strain";
-        parameters.bulk_modulus  = 1.;
-        parameters.shear_modulus = 0.;
-        const Materials::LinearElastic<dim> divergence_only(parameters);
-        Vector<double>                      residual;
+        // (built once, not per element)
+        static const Materials::LinearElastic<dim> divergence_only = [] {
+          Parameters::Material parameters;
+          parameters.model         = "linear elastic";
+          parameters.plane         = "strain";
+          parameters.bulk_modulus  = 1.;
+          parameters.shear_modulus = 0.;
+          return Materials::LinearElastic<dim>(parameters);
+        }();
+        Vector<double> residual;
         assemble_condensed_pressure_element<dim>(table,
                                                  nullptr,
                                                  y,
