@@ -143,17 +143,29 @@ namespace pg
   {
     if (local.dofs.empty())
       return;
-    if (!(local.with_matrix && matrix != nullptr) && range_size > 0)
+    const bool with_matrix = local.with_matrix && matrix != nullptr;
+
+    // Most elements touch no constrained DoF. Their entries go straight
+    // into the matrix and vectors; AffineConstraints would sort and resolve
+    // every row first, which for the large local matrices of CPD families
+    // took half of a Debug test run (cpd_convergence_01: 136 s -> 105 s;
+    // no measurable change in Release).
+    bool unconstrained = true, in_range = range_size > 0;
+    for (const auto dof : local.dofs)
       {
-        bool in_place = true;
-        for (const auto dof : local.dofs)
-          if (dof - range_first >= range_size || // also dof < range_first
-              constraints.is_constrained(dof))
-            {
-              in_place = false;
-              break;
-            }
-        if (in_place)
+        if (constraints.is_constrained(dof))
+          {
+            unconstrained = false;
+            break;
+          }
+        if (dof - range_first >= range_size) // also dof < range_first
+          in_range = false;
+      }
+    if (unconstrained)
+      {
+        if (with_matrix)
+          matrix->add(local.dofs, local.matrix);
+        if (in_range)
           {
             double *const rhs_values   = (*rhs).trilinos_vector()[0];
             double *const force_values = (*force).trilinos_vector()[0];
@@ -169,7 +181,9 @@ namespace pg
     minus_residual.reinit(local.residual.size(), true);
     for (unsigned int i = 0; i < local.residual.size(); ++i)
       minus_residual[i] = -local.residual[i];
-    if (local.with_matrix && matrix != nullptr)
+    if (unconstrained)
+      rhs->add(local.dofs, minus_residual);
+    else if (with_matrix)
       constraints.distribute_local_to_global(local.matrix,
                                              minus_residual,
                                              local.dofs,
