@@ -57,6 +57,11 @@ namespace pg
                           Patterns::Double(0.),
                           "Plate with hole: edge length L of the quarter "
                           "plate. Units: length.");
+        prm.declare_entry("Thickness",
+                          "10",
+                          Patterns::Double(0.),
+                          "Cook membrane in 3-D: the extent in z. Units: "
+                          "length.");
         prm.declare_entry("Hole radius",
                           "1",
                           Patterns::Double(0.),
@@ -131,6 +136,7 @@ namespace pg
           subdivisions.push_back(static_cast<unsigned int>(s));
         plate_size          = prm.get_double("Plate size");
         hole_radius         = prm.get_double("Hole radius");
+        thickness           = prm.get_double("Thickness");
         file_name           = prm.get("File name");
         coincident_vertices = prm.get("Coincident vertices");
         global_refinement   = prm.get_integer("Global refinement");
@@ -146,6 +152,11 @@ namespace pg
                                   std::to_string(hole_radius),
                                   "it must be smaller than 'Plate size' "
                                   "in subsection 'Geometry'."));
+      AssertThrow(mesh != "cook membrane" || thickness > 0.,
+                  ExcBadParameter("Geometry/Thickness",
+                                  std::to_string(thickness),
+                                  "the 3-D Cook membrane needs a positive "
+                                  "thickness."));
       AssertThrow(mesh != "file" || !file_name.empty(),
                   ExcBadParameter("Geometry/File name",
                                   file_name,

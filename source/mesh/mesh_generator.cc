@@ -109,27 +109,38 @@ namespace pg
 
 
       /**
-       * Cook's membrane: the colorized rectangle [0,48]x[0,44] mapped so that
-       * the bottom edge runs from (0,0) to (48,44) and the top edge from
-       * (0,44) to (48,60). The map is bilinear, so the straight-sided cells
-       * are mapped exactly and later refinement needs no manifold.
+       * Cook's membrane: the colorized rectangle [0,48]x[0,44] (in 3-D the
+       * box [0,48]x[0,44]x[0,'Thickness']) mapped so that the bottom edge
+       * runs from (0,0) to (48,44) and the top edge from (0,44) to (48,60);
+       * z is unchanged. The map is bilinear in x and y, so the
+       * straight-sided cells are mapped exactly and later refinement needs
+       * no manifold. Boundary ids: 0 left (x = 0), 1 right (x = 48),
+       * 2 bottom, 3 top, and in 3-D 4 front (z = 0), 5 back.
        */
+      template <int dim>
       void
       create_cook_membrane(const Parameters::Geometry &parameters,
-                           Triangulation<2>           &triangulation)
+                           Triangulation<dim>         &triangulation)
       {
-        GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                                  subdivisions_per_direction<2>(
-                                                    parameters),
-                                                  Point<2>(0., 0.),
-                                                  Point<2>(48., 44.),
-                                                  /*colorize=*/true);
+        Point<dim> upper;
+        upper[0] = 48.;
+        upper[1] = 44.;
+        if (dim == 3)
+          upper[dim - 1] = parameters.thickness;
+        GridGenerator::subdivided_hyper_rectangle(
+          triangulation,
+          subdivisions_per_direction<dim>(parameters),
+          Point<dim>(),
+          upper,
+          /*colorize=*/true);
 
         GridTools::transform(
-          [](const Point<2> &p) {
+          [](const Point<dim> &p) {
             const double y_bottom = 44. * p[0] / 48.;
             const double y_top    = 44. + 16. * p[0] / 48.;
-            return Point<2>(p[0], y_bottom + (y_top - y_bottom) * p[1] / 44.);
+            Point<dim>   q        = p;
+            q[1]                  = y_bottom + (y_top - y_bottom) * p[1] / 44.;
+            return q;
           },
           triangulation);
       }
@@ -444,7 +455,9 @@ namespace pg
           if (!parameters.hole.empty())
             cut_hole(parameters, triangulation);
         }
-      else if (mesh == "cook membrane" || mesh == "plate with hole")
+      else if (mesh == "cook membrane")
+        create_cook_membrane(parameters, triangulation);
+      else if (mesh == "plate with hole")
         {
           AssertThrow(dim == 2,
                       ExcBadParameter("Geometry/Mesh",
@@ -452,12 +465,7 @@ namespace pg
                                       "this mesh is not yet available in "
                                       "3-D; use it with 'Dimension = 2'."));
           if constexpr (dim == 2)
-            {
-              if (mesh == "cook membrane")
-                create_cook_membrane(parameters, triangulation);
-              else
-                create_plate_with_hole(parameters, triangulation);
-            }
+            create_plate_with_hole(parameters, triangulation);
         }
       else if (mesh == "file")
         read_mesh_file(parameters, triangulation, notes);

@@ -185,6 +185,19 @@ namespace
     print_bound("|area - 1440|",
                 GridTools::volume(triangulation) - 1440.,
                 1e-10);
+
+    deallog << "cook membrane 3-D, thickness 10, subdivisions 4, 4, 2 "
+            << "(volume 14400; faces 440, 160, 651.15282, 505.96443, 1440, "
+            << "1440)" << std::endl;
+    Triangulation<3> triangulation_3d;
+    pg::Mesh::create_mesh(geometry("set Mesh = cook membrane\n"
+                                   "set Subdivisions = 4, 4, 2\n"
+                                   "set Thickness = 10\n"),
+                          triangulation_3d);
+    print_mesh(triangulation_3d);
+    print_bound("|volume - 14400|",
+                GridTools::volume(triangulation_3d) - 14400.,
+                1e-9);
   }
 
 
@@ -421,9 +434,10 @@ namespace
                                      "set File name = mesh.vtk\n"),
                             triangulation);
     });
-    print_error("cook membrane in 3-D", []() {
+    print_error("cook membrane in 3-D with thickness 0", []() {
       Triangulation<3> triangulation;
-      pg::Mesh::create_mesh(geometry("set Mesh = cook membrane\n"),
+      pg::Mesh::create_mesh(geometry("set Mesh = cook membrane\n"
+                                     "set Thickness = 0\n"),
                             triangulation);
     });
     print_error("plate with hole in 3-D", []() {

@@ -24,8 +24,10 @@ namespace pg
       std::vector<double>       upper_corner;
       std::vector<unsigned int> subdivisions;
       /** Plate with hole: edge length L and hole radius R (length units). */
-      double      plate_size;
-      double      hole_radius;
+      double plate_size;
+      double hole_radius;
+      /** 'Thickness': z extent of the 3-D Cook membrane (length). */
+      double      thickness;
       std::string file_name;
       /** Mesh = file: merge | reject | keep coincident vertices. */
       std::string  coincident_vertices;
