@@ -91,7 +91,39 @@ namespace pg
       }
     result.outcome = Outcome::too_many_iterations;
     result.history = line.str();
+    result.failure = stall_diagnosis(result.residuals, reference);
     return result;
+  }
+
+
+
+  std::string
+  NewtonSolver::stall_diagnosis(const std::vector<double> &residuals,
+                                const double               reference) const
+  {
+    // The last four residuals small and within a factor 10 of each other:
+    // Newton has stalled, typically on the round-off floor of a stiff
+    // material (K/mu = 5e6 at nu = 0.4999999 puts it near 1e-5 |R_0|).
+    const unsigned int n = residuals.size();
+    if (n < 5 || !(reference > 0))
+      return "";
+    double low = residuals[n - 1], high = residuals[n - 1];
+    for (unsigned int i = n - 4; i < n; ++i)
+      {
+        low  = std::min(low, residuals[i]);
+        high = std::max(high, residuals[i]);
+      }
+    if (!(high <= 1e-2 * reference && high <= 10. * low))
+      return "";
+    std::ostringstream message;
+    message << std::setprecision(1) << std::scientific
+            << "Newton stalled between " << low / reference << " and "
+            << high / reference << " |R_0| in its last 4 iterations. If "
+            << "that is the round-off floor of a stiff material (e.g. nu "
+            << "close to 0.5), set 'Stagnation tolerance' in subsection "
+            << "'Newton' above " << high / reference << " (it is "
+            << parameters.stagnation_tolerance << ").";
+    return message.str();
   }
 
 

@@ -124,6 +124,15 @@ namespace pg
     report(const Result &result, const ConditionalOStream &out);
 
   private:
+    /**
+     * For a solve that ran out of iterations: if its residual has stalled at
+     * a small level, the message that says so and names 'Stagnation
+     * tolerance'; otherwise empty.
+     */
+    std::string
+    stall_diagnosis(const std::vector<double> &residuals,
+                    double                     reference) const;
+
     const Parameters::Newton &parameters;
   };
 } // namespace pg
