@@ -2,8 +2,10 @@
 // convergence by the residual test; a residual with an artificial round-off
 // floor (1e-9 |R_0|, below 'Stagnation tolerance' but above 'Relative
 // tolerance') accepted by the stagnation test; a floor above the stagnation
-// tolerance, a contracting but not converging iteration (wrong tangent), a
-// NaN residual and a failed assembly all refused.
+// tolerance (refused, and the failure says that Newton stalled, between
+// which levels), a contracting but not converging iteration (wrong
+// tangent; refused without that diagnosis), a NaN residual and a failed
+// assembly all refused.
 
 #include <pg/solvers/newton_solver.h>
 
