@@ -10,7 +10,7 @@
 #       extrapolated (the order fitted to the three values);
 #   (b) nu = 0.4999999, direct solver (MUMPS), 32 load steps and
 #       'Stagnation tolerance = 1e-4' (the round-off floor of the residual
-#       is about 6e-6 |R_0| at K/mu = 5e6): FEM Q1, FEM H1P0, VCBCPBG V5sn
+#       is 1e-5 to 6e-5 |R_0| at K/mu = 5e6): FEM Q1, FEM H1P0, VCBCPBG V5sn
 #       Unl, BCPBG UnlP0, VCBCPBG V5sn UnlP0 (n <= 12 for PG: each run
 #       takes some 500 Newton iterations); reference: FEM H1P0 on the
 #       regular 24 x 24 x 6 mesh.
@@ -26,7 +26,7 @@ WORK=$(mktemp -d)
 mkdir -p "$OUT" doc/figures
 RESULTS="$OUT/results.txt"
 
-run() { # panel label formulation n distortion nu solver [load steps]
+run() { # panel label formulation n distortion nu solver [load steps [stagnation tolerance]]
   [ -n "$ONLY" ] && [ "$2" != "$ONLY" ] && return 0
   name=$(echo "$1_$2_$4" | tr ' /' '__')
   nz=$(( $4 / 4 )); [ $nz -ge 1 ] || nz=1
