@@ -63,6 +63,36 @@ namespace pg
 
   template <int dim>
   void
+  Assembler<dim>::recover_local_fields(const LinearAlgebra::Vector &du)
+  {
+    for (ElementGroup<dim> *group : groups)
+      group->recover_local_fields(du);
+  }
+
+
+
+  template <int dim>
+  void
+  Assembler<dim>::reset_local_fields()
+  {
+    for (ElementGroup<dim> *group : groups)
+      group->reset_local_fields();
+  }
+
+
+
+  template <int dim>
+  void
+  Assembler<dim>::use_condensed_field_iterates(const bool use)
+  {
+    for (ElementGroup<dim> *group : groups)
+      group->use_condensed_field_iterates(use);
+  }
+
+
+
+  template <int dim>
+  void
   Assembler<dim>::set_history(QuadraturePointHistory *history_)
   {
     history = history_;

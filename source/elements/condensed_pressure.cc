@@ -170,6 +170,28 @@ namespace pg
                       "them. Enlarge the horizon (subsection "
                       "'Discretization')."));
         M_inverse = M.inverse();
+        moments   = M;
+      }
+
+      /** The point values sum_i c_i phi_{q,i} of the coefficients @p c. */
+      std::vector<double>
+      values(const Eigen::VectorXd &c) const
+      {
+        std::vector<double> v(phi.size());
+        for (unsigned int q = 0; q < phi.size(); ++q)
+          v[q] = phi[q].dot(c);
+        return v;
+      }
+
+      /** The moments sum_q w_q v_q phi_q of the point values @p v. */
+      Eigen::VectorXd
+      project_moments(const QuadratureTable<dim> &table,
+                      const std::vector<double>  &v) const
+      {
+        Eigen::VectorXd b = Eigen::VectorXd::Zero(m);
+        for (unsigned int q = 0; q < table.n_points(); ++q)
+          b += (table.weights[q] * v[q]) * phi[q];
+        return b;
       }
 
       /** The L2 projection coefficients of the point values @p v. */
@@ -177,15 +199,12 @@ namespace pg
       project(const QuadratureTable<dim> &table,
               const std::vector<double>  &v) const
       {
-        Eigen::VectorXd b = Eigen::VectorXd::Zero(m);
-        for (unsigned int q = 0; q < table.n_points(); ++q)
-          b += (table.weights[q] * v[q]) * phi[q];
-        return M_inverse * b;
+        return M_inverse * project_moments(table, v);
       }
 
       const unsigned int           m;
       std::vector<Eigen::VectorXd> phi;
-      Eigen::MatrixXd              M_inverse;
+      Eigen::MatrixXd              M_inverse, moments;
     };
 
 
@@ -230,35 +249,67 @@ namespace pg
 
 
 
+    /** The volume measure theta(F_q) at the points of @p table. */
+    template <int dim>
+    std::vector<double>
+    volume_measures(const QuadratureTable<dim>            &table,
+                    const std::vector<Tensor<1, dim>>     &y,
+                    const Materials::VolumetricSplit<dim> &split)
+    {
+      std::vector<double> theta(table.n_points());
+      for (unsigned int q = 0; q < table.n_points(); ++q)
+        theta[q] = split.volume_measure(deformation_gradient(table, q, y));
+      return theta;
+    }
+
+
+
+    /** W_vol'(Theta_q) at the point values @p Theta. */
+    template <int dim>
+    std::vector<double>
+    pressures_of(const std::vector<double>             &Theta,
+                 const Materials::VolumetricSplit<dim> &split)
+    {
+      std::vector<double> dW(Theta.size());
+      for (unsigned int q = 0; q < Theta.size(); ++q)
+        dW[q] = split.volumetric_strain_energy_derivative(Theta[q]);
+      return dW;
+    }
+
+
+
     /**
-     * The condensed fields at the points of @p table: Theta_q, the L2
-     * projection of theta onto the basis, and p_q, that of W_vol'(Theta).
+     * The coefficients of the condensed fields at local equilibrium (the
+     * closed form): c_Theta, the L2 projection of the volume measures
+     * @p theta onto the basis, and c_p, that of W_vol'(Theta).
      */
     template <int dim>
     void
     condensed_fields(const QuadratureTable<dim>            &table,
                      const FieldBasis<dim>                 &basis,
-                     const std::vector<Tensor<1, dim>>     &y,
+                     const std::vector<double>             &theta,
                      const Materials::VolumetricSplit<dim> &split,
-                     std::vector<double>                   &Theta,
-                     std::vector<double>                   &p)
+                     Eigen::VectorXd                       &c_Theta,
+                     Eigen::VectorXd                       &c_p)
     {
-      const unsigned int  n_points = table.n_points();
-      std::vector<double> theta(n_points);
-      for (unsigned int q = 0; q < n_points; ++q)
-        theta[q] = split.volume_measure(deformation_gradient(table, q, y));
-      const Eigen::VectorXd theta_coefficients = basis.project(table, theta);
-      Theta.resize(n_points);
-      std::vector<double> dW(n_points);
-      for (unsigned int q = 0; q < n_points; ++q)
-        {
-          Theta[q] = basis.phi[q].dot(theta_coefficients);
-          dW[q]    = split.volumetric_strain_energy_derivative(Theta[q]);
-        }
-      const Eigen::VectorXd p_coefficients = basis.project(table, dW);
-      p.resize(n_points);
-      for (unsigned int q = 0; q < n_points; ++q)
-        p[q] = basis.phi[q].dot(p_coefficients);
+      c_Theta = basis.project(table, theta);
+      c_p = basis.project(table, pressures_of(basis.values(c_Theta), split));
+    }
+
+
+
+    Eigen::VectorXd
+    to_eigen(const std::vector<double> &v)
+    {
+      return Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
+    }
+
+
+
+    std::vector<double>
+    to_std(const Eigen::VectorXd &v)
+    {
+      return std::vector<double>(v.data(), v.data() + v.size());
     }
   } // namespace
 
@@ -272,9 +323,45 @@ namespace pg
                      const unsigned int                     degree)
   {
     const FieldBasis<dim> basis(volumetric_table, degree);
-    std::vector<double>   Theta, p;
-    condensed_fields(volumetric_table, basis, y, split, Theta, p);
-    return {Theta[0], p[0]};
+    Eigen::VectorXd       c_Theta, c_p;
+    condensed_fields(volumetric_table,
+                     basis,
+                     volume_measures(volumetric_table, y, split),
+                     split,
+                     c_Theta,
+                     c_p);
+    return {basis.phi[0].dot(c_Theta), basis.phi[0].dot(c_p)};
+  }
+
+
+
+  void
+  update_condensed_fields(CondensedFieldIterate     &iterate,
+                          const std::vector<double> &du)
+  {
+    if (iterate.S.empty())
+      return;
+    const unsigned int m = iterate.a.size();
+    AssertDimension(iterate.S.size(), m * du.size());
+    const Eigen::Map<
+      const Eigen::
+        Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
+      S(iterate.S.data(), m, du.size());
+    const Eigen::Map<
+      const Eigen::
+        Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
+                          T(iterate.T.data(), m, m);
+    const Eigen::VectorXd d_Theta =
+      to_eigen(iterate.a) +
+      S * Eigen::Map<const Eigen::VectorXd>(du.data(), du.size());
+    const Eigen::VectorXd d_p = to_eigen(iterate.b) + T * d_Theta;
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        iterate.dilatation[i] += d_Theta[i];
+        iterate.pressure[i] += d_p[i];
+      }
+    // the linearisation belongs to the previous iterate
+    iterate.S.clear();
   }
 
 
@@ -288,14 +375,34 @@ namespace pg
     const Materials::VolumetricSplit<dim> &split,
     Vector<double>                        &residual,
     FullMatrix<double>                    *tangent,
-    const unsigned int                     degree)
+    const unsigned int                     degree,
+    CondensedFieldIterate                 *iterate)
   {
     Assert(degree == 0 || volumetric_table == nullptr, ExcNotImplemented());
     const QuadratureTable<dim> &vol_table =
       (volumetric_table != nullptr ? *volumetric_table : table);
-    const FieldBasis<dim> basis(vol_table, degree);
-    std::vector<double>   Theta, p;
-    condensed_fields(vol_table, basis, y, split, Theta, p);
+    const FieldBasis<dim>     basis(vol_table, degree);
+    const std::vector<double> theta = volume_measures(vol_table, y, split);
+    Eigen::VectorXd           c_Theta, c_p;
+    if (iterate == nullptr || iterate->at_equilibrium)
+      {
+        condensed_fields(vol_table, basis, theta, split, c_Theta, c_p);
+        if (iterate != nullptr)
+          {
+            iterate->dilatation     = to_std(c_Theta);
+            iterate->pressure       = to_std(c_p);
+            iterate->at_equilibrium = false;
+            iterate->S.clear();
+          }
+      }
+    else
+      {
+        AssertDimension(iterate->dilatation.size(), basis.m);
+        c_Theta = to_eigen(iterate->dilatation);
+        c_p     = to_eigen(iterate->pressure);
+      }
+    const std::vector<double> Theta = basis.values(c_Theta);
+    const std::vector<double> p     = basis.values(c_p);
 
     // The isochoric part and p d^2 theta at every point; for separate
     // volumetric points (PPG) two kernel calls.
@@ -335,27 +442,59 @@ namespace pg
           tangent->add(1., volumetric_tangent);
       }
 
-    // The coupling of the points through p(Theta(theta)):
-    // G_test^T M^{-1} (sum_q w_q W_vol''(Theta_q) phi_q phi_q^T) M^{-1}
-    // G_trial (for P0: W_vol''(Theta) / W g (x) g').
-    if (tangent != nullptr)
+    // Three fields: the local residuals R_p, R_Theta of the iterate enter
+    // the condensed residual through G_test^T M^{-1} (R_Theta + H M^{-1}
+    // R_p). The coupling of the points through p(Theta(theta)) is the
+    // tangent's G_test^T M^{-1} H M^{-1} G_trial (for P0: W_vol''(Theta) /
+    // W g (x) g').
+    if (tangent == nullptr && iterate == nullptr)
+      return {Theta[0], p[0]};
+    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(basis.m, basis.m);
+    for (unsigned int q = 0; q < vol_table.n_points(); ++q)
+      H += (vol_table.weights[q] *
+            split.volumetric_strain_energy_second_derivative(Theta[q])) *
+           basis.phi[q] * basis.phi[q].transpose();
+    const Eigen::MatrixXd G_test =
+      moment_derivative(vol_table, basis, y, split, true);
+    if (iterate != nullptr)
       {
-        Eigen::MatrixXd H = Eigen::MatrixXd::Zero(basis.m, basis.m);
-        for (unsigned int q = 0; q < vol_table.n_points(); ++q)
-          H += (vol_table.weights[q] *
-                split.volumetric_strain_energy_second_derivative(Theta[q])) *
-               basis.phi[q] * basis.phi[q].transpose();
-        const Eigen::MatrixXd D = basis.M_inverse * H * basis.M_inverse;
-        const Eigen::MatrixXd G_test =
-          moment_derivative(vol_table, basis, y, split, true);
-        const Eigen::MatrixXd DG_trial =
-          D * (vol_table.test_is_trial ?
-                 G_test :
-                 moment_derivative(vol_table, basis, y, split, false));
-        for (unsigned int i = 0; i < G_test.cols(); ++i)
-          if (!G_test.col(i).isZero(0.))
-            for (unsigned int j = 0; j < DG_trial.cols(); ++j)
-              (*tangent)(i, j) += G_test.col(i).dot(DG_trial.col(j));
+        const Eigen::VectorXd a =
+          basis.M_inverse *
+          (basis.project_moments(vol_table, theta) - basis.moments * c_Theta);
+        const Eigen::VectorXd b =
+          basis.M_inverse *
+          (basis.project_moments(vol_table, pressures_of(Theta, split)) -
+           basis.moments * c_p);
+        const Eigen::VectorXd correction =
+          G_test.transpose() * (b + basis.M_inverse * H * a);
+        for (unsigned int i = 0; i < correction.size(); ++i)
+          residual[i] += correction[i];
+        if (tangent != nullptr)
+          {
+            iterate->a = to_std(a);
+            iterate->b = to_std(b);
+          }
+      }
+    if (tangent == nullptr)
+      return {Theta[0], p[0]};
+    const Eigen::MatrixXd MG_trial =
+      basis.M_inverse *
+      (vol_table.test_is_trial ?
+         G_test :
+         moment_derivative(vol_table, basis, y, split, false));
+    const Eigen::MatrixXd DG_trial = basis.M_inverse * H * MG_trial;
+    for (unsigned int i = 0; i < G_test.cols(); ++i)
+      if (!G_test.col(i).isZero(0.))
+        for (unsigned int j = 0; j < DG_trial.cols(); ++j)
+          (*tangent)(i, j) += G_test.col(i).dot(DG_trial.col(j));
+    if (iterate != nullptr)
+      {
+        const Eigen::
+          Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>
+            S = MG_trial,
+            T = basis.M_inverse * H;
+        iterate->S.assign(S.data(), S.data() + S.size());
+        iterate->T.assign(T.data(), T.data() + T.size());
       }
     return {Theta[0], p[0]};
   }
@@ -379,7 +518,8 @@ namespace pg
                                       const Materials::VolumetricSplit<2> &,
                                       Vector<double> &,
                                       FullMatrix<double> *,
-                                      const unsigned int);
+                                      const unsigned int,
+                                      CondensedFieldIterate *);
   template CondensedPressure
   assemble_condensed_pressure_element(const QuadratureTable<3> &,
                                       const QuadratureTable<3> *,
@@ -387,5 +527,6 @@ namespace pg
                                       const Materials::VolumetricSplit<3> &,
                                       Vector<double> &,
                                       FullMatrix<double> *,
-                                      const unsigned int);
+                                      const unsigned int,
+                                      CondensedFieldIterate *);
 } // namespace pg

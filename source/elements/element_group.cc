@@ -1,3 +1,4 @@
+#include <pg/base/global_reader.h>
 #include <pg/elements/element_group.h>
 
 namespace pg
@@ -17,9 +18,59 @@ namespace pg
 
   template <int dim>
   void
-  ElementGroup<dim>::recover_local_fields(const unsigned int,
-                                          const LinearAlgebra::Vector &)
-  {}
+  ElementGroup<dim>::keep_condensed_field_iterates()
+  {
+    condensed_iterates.assign(n_elements(), CondensedFieldIterate());
+  }
+
+
+
+  template <int dim>
+  void
+  ElementGroup<dim>::recover_local_fields(const LinearAlgebra::Vector &du)
+  {
+    const LinearAlgebra::GlobalReader    du_at(du);
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  du_local;
+    for (unsigned int e = 0; e < condensed_iterates.size(); ++e)
+      {
+        get_dof_indices(e, dofs);
+        du_local.resize(dofs.size());
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          du_local[i] = du_at[dofs[i]];
+        update_condensed_fields(condensed_iterates[e], du_local);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ElementGroup<dim>::reset_local_fields()
+  {
+    for (auto &iterate : condensed_iterates)
+      iterate = CondensedFieldIterate();
+  }
+
+
+
+  template <int dim>
+  CondensedFieldIterate *
+  ElementGroup<dim>::condensed_field_iterate(const unsigned int e) const
+  {
+    return (condensed_iterates.empty() || !iterates_in_use) ?
+             nullptr :
+             &condensed_iterates[e];
+  }
+
+
+
+  template <int dim>
+  void
+  ElementGroup<dim>::use_condensed_field_iterates(const bool use)
+  {
+    iterates_in_use = use;
+  }
 
 
 

@@ -246,7 +246,8 @@ namespace pg
           *condensed_pressure,
           local.residual,
           local.with_matrix ? &local.matrix : nullptr,
-          condensed_pressure_degree);
+          condensed_pressure_degree,
+          this->condensed_field_iterate(e));
         return;
       }
     assemble_element(family_tables[e],

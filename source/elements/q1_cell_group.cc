@@ -128,14 +128,15 @@ namespace pg
         scratch.y[b][c] = cell->vertex(b)[c] - cell->vertex(0)[c] +
                           u_at[local.dofs[b * dim + c]];
     if (condensed_pressure != nullptr)
-      assemble_condensed_pressure_element<dim>(scratch.table,
-                                               nullptr,
-                                               scratch.y,
-                                               *condensed_pressure,
-                                               local.residual,
-                                               local.with_matrix ?
-                                                 &local.matrix :
-                                                 nullptr);
+      assemble_condensed_pressure_element<dim>(
+        scratch.table,
+        nullptr,
+        scratch.y,
+        *condensed_pressure,
+        local.residual,
+        local.with_matrix ? &local.matrix : nullptr,
+        0,
+        this->condensed_field_iterate(e));
     else
       assemble_element(scratch.table,
                        scratch.y,

@@ -158,6 +158,15 @@ namespace pg
           families->set_stabilisation(implicit_gradient_stabilisation());
         family_group = std::move(families);
       }
+    // Mixed elements: p and Theta as Newton iterates (not for the explicit
+    // integrator, which has no Newton updates: the closed form)
+    if (formulation.condensed_fields() &&
+        prm.newton.linearized_condensed_fields &&
+        prm.time.integrator != "leapfrog")
+      {
+        q1_cells->keep_condensed_field_iterates();
+        family_group->keep_condensed_field_iterates();
+      }
     assembler = std::make_unique<Assembler<dim>>(
       zero_constraints,
       std::vector<ElementGroup<dim> *>{q1_cells.get(), family_group.get()});
@@ -538,6 +547,14 @@ namespace pg
     energy = update * rhs;
     solution_owned += update;
     update_ghost_values();
+    if (formulation.condensed_fields())
+      {
+        LinearAlgebra::Vector ghosted_update(discretization.owned_dofs,
+                                             discretization.relevant_dofs,
+                                             comm);
+        ghosted_update = update;
+        assembler->recover_local_fields(ghosted_update);
+      }
     return true;
   }
 
@@ -563,7 +580,9 @@ namespace pg
       return;
     const LinearAlgebra::Vector u_saved = solution;
     solution                            = 0;
+    assembler->use_condensed_field_iterates(false);
     assemble(false);
+    assembler->use_condensed_field_iterates(true);
     solution = u_saved;
     // every rank stops alike (a load can fail on one rank's cells only)
     const std::string reduced = reduced_failure();

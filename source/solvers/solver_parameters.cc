@@ -96,6 +96,22 @@ namespace pg
           "near-incompressible materials raise far above 'Relative "
           "tolerance' (Cook's membrane at nu = 0.4999: 1e-9 to 1e-7). 0 "
           "switches the test off.");
+        prm.declare_entry(
+          "Condensed fields",
+          "linearized",
+          Patterns::Selection("linearized|equilibrium"),
+          "How the mixed formulations (UnlP0, U2P1, FEM Q1P0/H1P0) treat "
+          "their condensed pressure p and dilatation Theta between Newton "
+          "iterations. 'linearized': p and Theta are unknowns of Newton's "
+          "method, updated after each global solve by the linearized local "
+          "equations (the dissertation's local update, pg-methods section "
+          "12.2; deal.II's step-44); Newton then solves the three-field "
+          "system, whose convergence does not degrade as nu -> 0.5. "
+          "'equilibrium': p and Theta are recomputed from the displacement "
+          "at every iterate (Theta = mean J, p = W_vol'(Theta)): the same "
+          "solution, but Newton's method then sees a penalty term K (J - "
+          "1) and needs load steps that shrink with mu/K. Explicit "
+          "dynamics always uses 'equilibrium'.");
       }
       prm.leave_subsection();
     }
@@ -111,6 +127,8 @@ namespace pg
         relative_tolerance   = prm.get_double("Relative tolerance");
         absolute_tolerance   = prm.get_double("Absolute tolerance");
         stagnation_tolerance = prm.get_double("Stagnation tolerance");
+        linearized_condensed_fields =
+          (prm.get("Condensed fields") == "linearized");
       }
       prm.leave_subsection();
     }

@@ -78,6 +78,21 @@ namespace pg
              LinearAlgebra::Vector       &force,
              const LoadTerm              &loads = LoadTerm());
 
+    /**
+     * The local update of the condensed fields of every group after the
+     * Newton update @p du (ghosted like u of assemble()).
+     */
+    void
+    recover_local_fields(const LinearAlgebra::Vector &du);
+
+    /** Every group's condensed fields back to local equilibrium. */
+    void
+    reset_local_fields();
+
+    /** ElementGroup::use_condensed_field_iterates() of every group. */
+    void
+    use_condensed_field_iterates(const bool use);
+
     /** A local system f_int - f_ext into rhs (minus, condensed) and force. */
     void
     distribute(const LocalSystem &local);

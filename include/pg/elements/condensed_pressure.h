@@ -33,6 +33,46 @@ namespace pg
   };
 
   /**
+   * The condensed fields of one element as a Newton iterate (the
+   * dissertation's local update after each global solve, pg-methods.md
+   * section 12.2): the coefficients of Theta and p in the element's basis
+   * phi (P0: (1); P1: (1, (X - X_c) / L)), m values each, and the
+   * linearisation of the local equations at the last tangent assembly,
+   *   d Theta = a + S du,   d p = b + T d Theta
+   * (a = M^-1 R_p, b = M^-1 R_Theta, S = M^-1 G, T = M^-1 H in the notation
+   * of assemble_condensed_pressure_element()). Unlike the closed form, p is
+   * then not recomputed from the displacement at every iterate, so Newton's
+   * method works on the three-field system: its convergence radius does not
+   * shrink with K/mu, where the closed form's (a penalty method) does.
+   */
+  struct CondensedFieldIterate
+  {
+    /**
+     * True until the first assembly sets the coefficients to local
+     * equilibrium (the closed form) at the displacement it sees; set it
+     * again whenever the displacement is changed outside Newton's method.
+     */
+    bool at_equilibrium = true;
+    /** c_Theta and c_p (m values each). */
+    std::vector<double> dilatation, pressure;
+    /**
+     * a, b (m values each), S (m x n_dofs, row by row) and T (m x m) of the
+     * last assembly with a tangent; empty before it.
+     */
+    std::vector<double> a, b, S, T;
+  };
+
+  /**
+   * The local update after a Newton update: @p iterate's coefficients +=
+   * (a + S du, b + T (a + S du)) with the element's update @p du (local
+   * DoFs, node-major). Nothing if no tangent has been assembled at this
+   * iterate.
+   */
+  void
+  update_condensed_fields(CondensedFieldIterate     &iterate,
+                          const std::vector<double> &du);
+
+  /**
    * The condensed fields at the local positions @p y: the volumetric
    * points are those of @p volumetric_table (pg-methods.md section 12.2.1:
    * every point of a PBG family or a Q1 cell, the master of a PPG family).
@@ -74,6 +114,20 @@ namespace pg
    * one-point master table of a PPG family. Units: force (residual),
    * force per length (tangent). Overwrites @p residual and @p tangent
    * (nullptr: residual only) and returns the condensed fields.
+   *
+   * With @p iterate, p and Theta are its coefficients c_p, c_Theta instead
+   * of the closed form (three fields; the closed form when
+   * iterate->at_equilibrium, which it then stores). With the basis phi,
+   * M = sum w phi phi^T, H = sum w W_vol''(Theta_q) phi phi^T, the moments
+   * G = d/du sum w phi theta_q and the local residuals
+   *   R_p = sum_q w_q phi_q theta_q - M c_Theta,
+   *   R_Theta = sum_q w_q phi_q W_vol'(Theta_q) - M c_p,
+   * the element's condensed residual and tangent are
+   *   r = r_u(p_q) + G_test^T M^-1 (R_Theta + H M^-1 R_p),
+   *   k = k_u(p_q) + G_test^T M^-1 H M^-1 G_trial,
+   * which at local equilibrium (R_p = R_Theta = 0) are the closed form's.
+   * An assembly with a tangent stores the linearisation that
+   * update_condensed_fields() applies.
    */
   template <int dim>
   CondensedPressure
@@ -84,7 +138,8 @@ namespace pg
     const Materials::VolumetricSplit<dim> &material,
     Vector<double>                        &residual,
     FullMatrix<double>                    *tangent,
-    const unsigned int                     degree = 0);
+    const unsigned int                     degree  = 0,
+    CondensedFieldIterate                 *iterate = nullptr);
 } // namespace pg
 
 #endif

@@ -3,6 +3,7 @@
 
 #include <pg/base/global.h>
 #include <pg/base/linear_algebra.h>
+#include <pg/elements/condensed_pressure.h>
 
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/point.h>
@@ -113,12 +114,37 @@ namespace pg
              LocalSystem                 &local) const = 0;
 
     /**
-     * After a Newton update @p du (indexed by global DoF, ghosted like u of
-     * assemble()): recover the
-     * condensed local fields of element @p e. Nothing by default.
+     * Keep the condensed p and Theta of every element as Newton iterates
+     * (CondensedFieldIterate: three fields, the local update after each
+     * global solve) instead of the closed form. For groups whose assemble()
+     * passes condensed_field_iterate() to the condensed kernel.
      */
-    virtual void
-    recover_local_fields(const unsigned int e, const LinearAlgebra::Vector &du);
+    void
+    keep_condensed_field_iterates();
+
+    /**
+     * After a Newton update @p du (indexed by global DoF, ghosted like u of
+     * assemble()): the local update of every element's condensed fields.
+     * Nothing without iterates.
+     */
+    void
+    recover_local_fields(const LinearAlgebra::Vector &du);
+
+    /**
+     * The displacement was set outside Newton's method (a new start, a
+     * step cut, a restart, an explicit step): the condensed fields return
+     * to local equilibrium at the next assembly.
+     */
+    void
+    reset_local_fields();
+
+    /**
+     * Whether assemble() uses the iterates (default) or the closed form,
+     * leaving the iterates alone: the external force is computed as the
+     * residual at u = 0, where the closed form's internal force is zero.
+     */
+    void
+    use_condensed_field_iterates(const bool use);
 
     /** "Q1 cell 17", "the family of particle 4", for messages. */
     virtual std::string
@@ -131,6 +157,19 @@ namespace pg
     /** What to check when an element's residual is not finite. */
     virtual std::string
     non_finite_hint() const = 0;
+
+  protected:
+    /**
+     * The condensed-field iterate of element @p e, or nullptr (closed form,
+     * keep_condensed_field_iterates() not called). assemble() of element e
+     * writes it; distinct elements are distinct objects (thread-safe).
+     */
+    CondensedFieldIterate *
+    condensed_field_iterate(const unsigned int e) const;
+
+  private:
+    mutable std::vector<CondensedFieldIterate> condensed_iterates;
+    bool                                       iterates_in_use = true;
   };
 } // namespace pg
 

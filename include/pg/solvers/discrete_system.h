@@ -152,6 +152,7 @@ namespace pg
     displacement_changed() override
     {
       update_ghost_values();
+      assembler->reset_local_fields();
     }
 
     void

@@ -46,6 +46,12 @@ namespace pg
       double       absolute_tolerance;
       /** See NewtonSolver: the round-off stagnation test (0: off). */
       double stagnation_tolerance;
+      /**
+       * 'Condensed fields': true (linearized, the default) keeps the
+       * condensed p and Theta of mixed elements as Newton iterates;
+       * false recomputes them from u at every iterate (closed form).
+       */
+      bool linearized_condensed_fields;
 
       static void
       declare_parameters(ParameterHandler &prm);
