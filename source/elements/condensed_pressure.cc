@@ -6,6 +6,10 @@ namespace pg
 {
   namespace
   {
+    /** The layout of CondensedFieldIterate's S and T. */
+    using RowMajorMatrix =
+      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
     /**
      * The material the kernel sees at a point of a condensed-pressure
      * element: the isochoric part (if @p with_isochoric) plus the volumetric
@@ -343,15 +347,9 @@ namespace pg
       return;
     const unsigned int m = iterate.a.size();
     AssertDimension(iterate.S.size(), m * du.size());
-    const Eigen::Map<
-      const Eigen::
-        Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
-      S(iterate.S.data(), m, du.size());
-    const Eigen::Map<
-      const Eigen::
-        Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
-                          T(iterate.T.data(), m, m);
-    const Eigen::VectorXd d_Theta =
+    const Eigen::Map<const RowMajorMatrix> S(iterate.S.data(), m, du.size());
+    const Eigen::Map<const RowMajorMatrix> T(iterate.T.data(), m, m);
+    const Eigen::VectorXd                  d_Theta =
       to_eigen(iterate.a) +
       S * Eigen::Map<const Eigen::VectorXd>(du.data(), du.size());
     const Eigen::VectorXd d_p = to_eigen(iterate.b) + T * d_Theta;
@@ -489,10 +487,7 @@ namespace pg
           (*tangent)(i, j) += G_test.col(i).dot(DG_trial.col(j));
     if (iterate != nullptr)
       {
-        const Eigen::
-          Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>
-            S = MG_trial,
-            T = basis.M_inverse * H;
+        const RowMajorMatrix S = MG_trial, T = basis.M_inverse * H;
         iterate->S.assign(S.data(), S.data() + S.size());
         iterate->T.assign(T.data(), T.data() + T.size());
       }
