@@ -12,6 +12,8 @@
 # gives at the corners). The load step starts with 'Predictor' = linearized
 # (default) or 'boundary values'. FORMULATIONS="<code>|<code>...": run
 # these only; APPEND=1: append to the results instead of starting them.
+# TURN=1: the fewest equal load steps for a full turn (see below), into
+# doc/benchmarks/torsion_prism/turn_N<N>_<predictor>.txt.
 # Writes doc/benchmarks/torsion_prism/results_N<N>_<predictor>.txt.
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/torsion_prism.sh build-release/applications/pg_solve/pg_solve [N] [linearized|boundary values]
@@ -24,11 +26,12 @@ OUT=doc/benchmarks/torsion_prism
 WORK=$(mktemp -d)
 mkdir -p "$OUT"
 RESULTS="$OUT/results_N${N}_$(echo "$PREDICTOR" | tr ' ' '_').txt"
-[ -n "$APPEND" ] ||
+[ -n "$APPEND" ] || [ -n "$TURN" ] ||
   echo "# formulation | mesh | horizon factor | DoFs | largest single-step angle (deg) | first failing angle (deg) | Newton iterations at the largest angle | seconds per Newton step" > "$RESULTS"
 
-# converges <formulation> <angle in degrees>: exit status 0 if one load step
-# of that angle converges
+# converges <formulation> <angle in degrees> [load steps]: exit status 0 if
+# the rotation by that angle converges in that many equal load steps
+# (default 1)
 converges() {
   radians=$(awk "BEGIN { printf \"%.15g\", $2 * atan2(0, -1) / 180 }")
   cat > "$WORK/run.prm" <<END
@@ -56,7 +59,7 @@ subsection Boundary conditions
   end
 end
 subsection Loading
-  set Load steps        = 1
+  set Load steps        = ${3:-1}
   set Maximum step cuts = 0
   set Predictor         = $PREDICTOR
 end
@@ -73,6 +76,48 @@ end
 END
   "$PG_SOLVE" "$WORK/run.prm" > "$WORK/run.log" 2>&1
 }
+
+# TURN=1: instead of the bisection, the fewest equal load steps (no cuts)
+# for a full 360 degree turn: starting from n = 360 / (largest single-step
+# angle of the results file), fewer steps while n converges, more steps
+# (at most 12) while it does not.
+if [ -n "$TURN" ]; then
+  TURNS="$OUT/turn_N${N}_$(echo "$PREDICTOR" | tr ' ' '_').txt"
+  [ -n "$APPEND" ] ||
+    echo "# formulation | mesh | horizon factor | fewest equal steps for 360 deg | step counts tried | Newton iterations | wall (s)" > "$TURNS"
+  echo "$FORMULATIONS" | tr '|' '\n' | while read -r f; do
+    angle=$(awk -F' [|] ' -v f="$f" '$1 == f { a = $5 } END { print a + 0 }' "$RESULTS")
+    [ "$angle" -gt 0 ] || { echo "$f: no single-step angle in $RESULTS"; continue; }
+    n=$(( (360 + angle - 1) / angle ))
+    tried=""
+    best=""
+    record() { # remember the run of n steps as the best so far
+      best=$1
+      its=$(/usr/bin/env python3 -c "import json; print(json.load(open('$WORK/out/summary.json'))['newton_iterations'])")
+      wall=$(awk "BEGIN { printf \"%.1f\", $(date +%s.%N) - $start }")
+    }
+    start=$(date +%s.%N)
+    tried="$n"
+    if converges "$f" 360 $n; then
+      record $n
+      while [ $n -gt 1 ]; do
+        n=$((n - 1)); tried="$tried $n"; start=$(date +%s.%N)
+        converges "$f" 360 $n || break
+        record $n
+      done
+    else
+      limit=$((n + 12))
+      while [ $n -lt $limit ]; do
+        n=$((n + 1)); tried="$tried $n"; start=$(date +%s.%N)
+        if converges "$f" 360 $n; then record $n; break; fi
+      done
+    fi
+    echo "$f | $N x $N x $((5 * N)) | $HORIZON | ${best:-none} | $tried | ${its:--} | ${wall:--}" >> "$TURNS"
+    tail -n 1 "$TURNS"
+  done
+  rm -rf "$WORK"
+  exit 0
+fi
 
 [ -n "$FORMULATIONS" ] ||
   FORMULATIONS="FEM|FEM H1P0|VCBCPPG V3sn Unl|VCBCPPG V3sn UnlP0|VCBCPBG V5sn Unl|VCBCPBG V5sn UnlP0|VCPBG V5sn U2|VCPBG V5sn U2P1"
