@@ -160,9 +160,10 @@ namespace pg
       }
     // Mixed elements: p and Theta as Newton iterates (not for the explicit
     // integrator, which has no Newton updates: the closed form)
-    if (formulation.condensed_fields() &&
-        prm.newton.linearized_condensed_fields &&
-        prm.time.integrator != "leapfrog")
+    condensed_field_iterates = formulation.condensed_fields() &&
+                               prm.newton.linearized_condensed_fields &&
+                               prm.time.integrator != "leapfrog";
+    if (condensed_field_iterates)
       {
         q1_cells->keep_condensed_field_iterates();
         family_group->keep_condensed_field_iterates();
@@ -547,7 +548,7 @@ namespace pg
     energy = update * rhs;
     solution_owned += update;
     update_ghost_values();
-    if (formulation.condensed_fields())
+    if (condensed_field_iterates)
       {
         LinearAlgebra::Vector ghosted_update(discretization.owned_dofs,
                                              discretization.relevant_dofs,

@@ -316,6 +316,12 @@ namespace pg
     std::unique_ptr<ElementGroup<dim>> family_group;
     std::unique_ptr<Assembler<dim>>    assembler;
     /**
+     * Whether the groups keep their condensed p and Theta as Newton
+     * iterates ('Newton/Condensed fields = linearized' with a mixed code and
+     * an implicit method), so that apply_newton_update() recovers them.
+     */
+    bool condensed_field_iterates = false;
+    /**
      * The material state at the groups' evaluation points: committed after
      * every accepted (sub)step, reverted after a cut.
      */
