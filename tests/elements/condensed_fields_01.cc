@@ -15,18 +15,13 @@
 // a corner family of a distorted particle set (BCPBG UnlP0, BCPPG UnlP0,
 // PBG U2P1) and on Q1P0 / H1P0 cells, in 2-D and 3-D.
 
-#include <pg/base/formulation_code.h>
 #include <pg/elements/condensed_pressure.h>
-#include <pg/elements/family_elements.h>
-#include <pg/elements/q1_cell.h>
 #include <pg/materials/material.h>
 
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
-#include "../particle_fixture.h"
 #include "../tests.h"
+#include "mixed_elements.h"
 
 using namespace pg;
 
@@ -279,9 +274,8 @@ test()
   const ParticleFixture<dim> fixture(dim == 2 ? 6 : 4,
                                      0.25,
                                      dim == 2 ? 2.51 : 2.01);
-  const double                    h = 1. / (dim == 2 ? 6 : 4);
-  std::mt19937                    rng(11);
-  const std::vector<unsigned int> masters = fixture.interior_and_corner();
+  const double h = 1. / (dim == 2 ? 6 : 4);
+  std::mt19937 rng(11);
 
   Parameters::Material parameters;
   parameters.model          = "isochoric-volumetric neo-Hooke";
@@ -312,51 +306,19 @@ test()
     deallog << std::endl;
   };
 
-  for (const std::string code : {"BCPBG UnlP0", "BCPPG UnlP0", "PBG U2P1"})
-    {
-      const FormulationCode formulation = parse_formulation_code(code);
-      FamilyElements<dim>   elements(fixture.particles,
-                                   fixture.families,
-                                   formulation,
-                                   ShapeFunctions::parse_base("MTE1"),
-                                   1.);
-      elements.initialize();
-      const bool pbg = (formulation.method == FormulationCode::Method::pbg);
-      Errors     worst;
-      for (const unsigned int k : masters)
-        {
-          QuadratureTable<dim> table, master_table;
-          elements.build(k, table);
-          elements.build_master_table(k, master_table);
-          worst.max(check_element(table,
-                                  pbg ? nullptr : &master_table,
-                                  elements.geometry(k).bonds,
-                                  split,
-                                  mu,
-                                  h,
-                                  rng,
-                                  formulation.condensed_pressure_degree()));
-        }
-      report(formulation.text, worst);
-    }
-
-  const FE_Q<dim> fe(1);
-  FEValues<dim>   fe_values(fe,
-                          QGauss<dim>(2),
-                          update_gradients | update_JxW_values);
-  Errors          worst;
-  for (const auto &cell : fixture.tria.active_cell_iterators())
-    if (cell->active_cell_index() % 7 == 0)
-      {
-        fe_values.reinit(cell);
-        QuadratureTable<dim> table;
-        fill_q1_table(fe_values, table);
-        std::vector<Tensor<1, dim>> X(cell->n_vertices());
-        for (const unsigned int v : cell->vertex_indices())
-          X[v] = cell->vertex(v) - cell->vertex(0);
-        worst.max(check_element<dim>(table, nullptr, X, split, mu, h, rng, 0));
-      }
-  report(dim == 2 ? "Q1P0 cell" : "H1P0 cell", worst);
+  Errors worst;
+  for_each_mixed_element<dim>(
+    fixture,
+    [&](const QuadratureTable<dim>        &table,
+        const QuadratureTable<dim>        *volumetric,
+        const std::vector<Tensor<1, dim>> &X,
+        const unsigned int                 degree) {
+      worst.max(check_element(table, volumetric, X, split, mu, h, rng, degree));
+    },
+    [&](const std::string &element) {
+      report(element, worst);
+      worst = Errors();
+    });
 }
 
 

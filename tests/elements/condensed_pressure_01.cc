@@ -19,17 +19,11 @@
 // interior and a corner family of a distorted particle set (BCPBG, BCPPG,
 // PBG U2P1), and on Q1 cells, in 2-D and 3-D.
 
-#include <pg/base/formulation_code.h>
 #include <pg/elements/condensed_pressure.h>
-#include <pg/elements/family_elements.h>
-#include <pg/elements/q1_cell.h>
 #include <pg/materials/material.h>
 
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_values.h>
-
-#include "../particle_fixture.h"
 #include "../tests.h"
+#include "mixed_elements.h"
 
 using namespace pg;
 
@@ -233,9 +227,8 @@ test()
   const ParticleFixture<dim> fixture(dim == 2 ? 6 : 4,
                                      0.25,
                                      dim == 2 ? 2.51 : 2.01);
-  const double                    h = 1. / (dim == 2 ? 6 : 4);
-  std::mt19937                    rng(7);
-  const std::vector<unsigned int> masters = fixture.interior_and_corner();
+  const double h = 1. / (dim == 2 ? 6 : 4);
+  std::mt19937 rng(7);
 
   const auto report = [&](const std::string &name, const Errors &worst) {
     const auto verdict = [](const double v, const double bound) {
@@ -265,65 +258,28 @@ test()
           dynamic_cast<const Materials::VolumetricSplit<dim> &>(
             *material_owner);
         const bool rotate = (model != "linear elastic");
-        for (const std::string code :
-             {"BCPBG UnlP0", "BCPPG UnlP0", "PBG U2P1"})
-          {
-            const FormulationCode formulation = parse_formulation_code(code);
-            FamilyElements<dim>   elements(fixture.particles,
-                                         fixture.families,
-                                         formulation,
-                                         ShapeFunctions::parse_base("MTE1"),
-                                         1.);
-            elements.initialize();
-            const bool pbg =
-              (formulation.method == FormulationCode::Method::pbg);
-            Errors worst;
-            for (const unsigned int k : masters)
-              {
-                QuadratureTable<dim> table, master_table;
-                elements.build(k, table);
-                elements.build_master_table(k, master_table);
-                worst.max(
-                  check_element(table,
-                                pbg ? nullptr : &master_table,
-                                elements.geometry(k).bonds,
-                                material,
-                                h,
-                                rotate,
-                                rng,
-                                formulation.condensed_pressure_degree()));
-              }
+        Errors     worst;
+        for_each_mixed_element<dim>(
+          fixture,
+          [&](const QuadratureTable<dim>        &table,
+              const QuadratureTable<dim>        *volumetric,
+              const std::vector<Tensor<1, dim>> &X,
+              const unsigned int                 degree) {
+            worst.max(check_element(table,
+                                    volumetric,
+                                    X,
+                                    material,
+                                    h,
+                                    rotate,
+                                    rng,
+                                    degree));
+          },
+          [&](const std::string &element) {
             std::ostringstream name;
-            name << formulation.text << ", " << model << ", nu = " << nu;
+            name << element << ", " << model << ", nu = " << nu;
             report(name.str(), worst);
-          }
-
-        const FE_Q<dim> fe(1);
-        FEValues<dim>   fe_values(fe,
-                                QGauss<dim>(2),
-                                update_gradients | update_JxW_values);
-        Errors          worst;
-        for (const auto &cell : fixture.tria.active_cell_iterators())
-          if (cell->active_cell_index() % 7 == 0)
-            {
-              fe_values.reinit(cell);
-              QuadratureTable<dim> table;
-              fill_q1_table(fe_values, table);
-              std::vector<Tensor<1, dim>> X(cell->n_vertices());
-              for (const unsigned int v : cell->vertex_indices())
-                X[v] = cell->vertex(v) - cell->vertex(0);
-              worst.max(check_element<dim>(table,
-                                           nullptr,
-                                           X,
-                                           material,
-                                           h,
-                                           rotate,
-                                           rng));
-            }
-        std::ostringstream name;
-        name << (dim == 2 ? "Q1P0" : "H1P0") << " cell, " << model
-             << ", nu = " << nu;
-        report(name.str(), worst);
+            worst = Errors();
+          });
       }
 }
 
