@@ -272,7 +272,12 @@ namespace pg
     v.material               = material.get();
     v.triangulation          = &discretization.triangulation;
     v.dof_handler            = &discretization.dof_handler;
-    v.fe                     = &discretization.fe;
+    // the element of the FE cells (with extra nodal fields, the hp
+    // collection's FE-cell element: u and FE_Nothing)
+    v.fe = discretization.field_layout ?
+             &discretization.field_layout
+                ->fe_collection()[FieldLayout<dim>::fe_cell_index] :
+             &discretization.fe;
     v.fe_scalar              = &discretization.fe_scalar;
     v.meshfree               = &discretization.meshfree;
     v.particles              = &discretization.particles;

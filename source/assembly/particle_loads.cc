@@ -194,8 +194,12 @@ namespace pg
     local_system.with_matrix = false;
     for (const auto &cell : meshfree_neumann_cells)
       {
-        local_system.dofs.resize(cell->get_fe().n_dofs_per_cell());
-        cell->get_dof_indices(local_system.dofs);
+        // the displacement DoFs, node-major (a meshfree cell may carry
+        // extra nodal fields besides)
+        local_system.dofs.resize(cell->n_vertices() * dim);
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int c = 0; c < dim; ++c)
+            local_system.dofs[v * dim + c] = cell->vertex_dof_index(v, c);
         local_system.residual.reinit(local_system.dofs.size());
         loads.add_face_tractions(cell, fe_face_values, local_system.residual);
         if (!all_finite(local_system.residual))

@@ -13,13 +13,14 @@ namespace pg
       "the VC correction function V1 ... V5 (default V3 for PPG, V5 for "
       "PBG, V1 for VC2) and its boundary option <b> = p, s or sn (default "
       "sn; VC2 takes s), and <points> = Unl (default), U1 (PBG only), U2, "
-      "UnlP0 (mixed, PBG or PPG), U2P1 (mixed, PBG only), U1SUnl or U1SIG "
+      "UnlP0 (mixed, PBG or PPG), U2P1, U2P1C or Unl+P1C (mixed, PBG "
+      "only), U1SUnl or U1SIG "
       "(stabilised U1, PBG only). "
       "The bond correction BC is the default of Unl; 'noBC' switches it "
       "off. E.g. 'VCPPG V3sn Unl' (= 'VCBCPPG V3sn Unl TL'), 'VCPBG Unl' "
       "(= 'VCBCPBG V5sn Unl TL'), 'PBG Unl noBC', 'PBG U1', "
       "'VC2PPG V1s U2', 'VCPPG V3sn UnlP0', 'VCPBG U2P1', 'VCPBG U1SUnl', "
-      "'VCPBG U1SIG'; or 'FEM' (Q1/H1), 'FEM Q1P0' (H1P0 in 3-D) or "
+      "'VCPBG U1SIG', 'VCPBG Unl+P1C'; or 'FEM' (Q1/H1), 'FEM Q1P0' (H1P0 in 3-D) or "
       "'CPD'.";
 
 
@@ -82,6 +83,8 @@ namespace pg
       using Points = FormulationCode::Points;
       text += (p0                                                   ? " UnlP0" :
                code.fields == FormulationCode::Fields::condensed_p1 ? " U2P1" :
+               code.fields == FormulationCode::Fields::nodal_p1 ?
+                                                       (code.bubble ? " Unl+P1C" : " U2P1C") :
                code.points == Points::unl                           ? " Unl" :
                code.points == Points::u1 && code.implicit_gradients ? " U1SIG" :
                code.points == Points::u1                            ? " U1" :
@@ -255,20 +258,25 @@ namespace pg
       {
         const std::string &w = words[i];
         if (w == "Unl" || w == "U1" || w == "U2" || w == "UnlP0" ||
-            w == "U2P1" || w == "U1SUnl" || w == "U1SIG")
+            w == "U2P1" || w == "U1SUnl" || w == "U1SIG" || w == "U2P1C" ||
+            w == "Unl+P1C")
           {
             if (have_points)
               reject(code, "it names two formulations.");
             have_points = true;
             result.points =
               ((w == "U1" || w == "U1SIG") ? FormulationCode::Points::u1 :
-               (w == "U2" || w == "U2P1")  ? FormulationCode::Points::u2 :
+               (w == "U2" || w == "U2P1" || w == "U2P1C") ?
+                                             FormulationCode::Points::u2 :
                w == "U1SUnl"               ? FormulationCode::Points::u1s_unl :
                                              FormulationCode::Points::unl);
             if (w == "UnlP0")
               result.fields = FormulationCode::Fields::condensed_p0;
             if (w == "U2P1")
               result.fields = FormulationCode::Fields::condensed_p1;
+            if (w == "U2P1C" || w == "Unl+P1C")
+              result.fields = FormulationCode::Fields::nodal_p1;
+            result.bubble = (w == "Unl+P1C");
             result.implicit_gradients = (w == "U1SIG");
           }
         else if (w == "noBC")
@@ -312,9 +320,12 @@ namespace pg
                      "the VC boundary option <" + option +
                        "> is unknown; use p, s or sn.");
           }
-        else if (w == "IUnlP0" || w == "U2P1C" || w == "Unl+P1C" ||
-                 w == "U1SIG")
-          reject(code, "the formulation <" + w + "> is not yet available.");
+        else if (w == "IUnlP0")
+          reject(code,
+                 "the incompressible formulation IUnlP0 (nu = 0.5, a global "
+                 "pressure per family) is not yet available; for nearly "
+                 "incompressible materials use 'VCPBG V5sn Unl+P1C' or "
+                 "'VCBCPBG V5sn UnlP0' with Poisson's ratio below 0.5.");
         else
           reject(code, "the part <" + w + "> is unknown.");
       }
@@ -373,6 +384,14 @@ namespace pg
              "volumetric point at the master only, where a linear field "
              "is undetermined. U2P1 is a PBG formulation: write 'VCPBG "
              "U2P1'.");
+    if (result.fields == FormulationCode::Fields::nodal_p1 &&
+        result.method != FormulationCode::Method::pbg)
+      reject(code,
+             std::string(result.bubble ? "Unl+P1C" : "U2P1C") +
+               " (sections 6.2.2, 6.2.3) is defined for PBG: its nodal "
+               "pressure and dilatation are interpolated at every member of "
+               "a family. Write 'VCPBG " +
+               (result.bubble ? "V5sn Unl+P1C" : "U2P1C") + "'.");
     if (result.implicit_gradients &&
         result.method != FormulationCode::Method::pbg)
       reject(code,

@@ -350,7 +350,7 @@ namespace pg
                     "the master's weight in U1SIG's MLS1 second derivatives "
                     "is that of a member at this distance; it must be "
                     "positive (default 0.001)."));
-      if (code.condensed_fields())
+      if (code.mixed())
         {
           AssertThrow(material.model == "isochoric-volumetric neo-Hooke" ||
                         material.model == "linear elastic",
@@ -374,6 +374,32 @@ namespace pg
                                         "> needs plane strain: plane stress "
                                         "has no volumetric constraint (and "
                                         "does not lock)."));
+        }
+      if (code.n_nodal_fields() > 0)
+        {
+          // p and Theta are global unknowns: a saddle-point system
+          // (pg-methods.md section 15), and no mass for them
+          AssertThrow(linear_solver.type == "direct",
+                      ExcBadParameter(
+                        "Linear solver/Type",
+                        linear_solver.type,
+                        "the formulation <" + code.text +
+                          "> has the pressure and the dilatation as nodal "
+                          "unknowns, so its tangent is an indefinite "
+                          "saddle-point matrix that CG and GMRES with "
+                          "algebraic multigrid do not solve. Set 'Type = "
+                          "direct'."));
+          AssertThrow(analysis.type == "static" && !time.dynamic(),
+                      ExcBadParameter(
+                        analysis.type != "static" ? "Analysis/Type" :
+                                                    "Time/Integrator",
+                        analysis.type != "static" ? analysis.type :
+                                                    time.integrator,
+                        "the formulation <" + code.text +
+                          "> (nodal pressure and dilatation) is available "
+                          "for quasi-static load stepping only so far. Use "
+                          "'Type = static' without an integrator, or the "
+                          "condensed mixed formulation 'VCPBG V5sn UnlP0'."));
         }
     }
 

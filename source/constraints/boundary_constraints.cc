@@ -63,16 +63,19 @@ namespace pg
     c.clear();
     c.reinit(relevant_dofs);
 
-    // The components in @p mask of vertex v of @p object (a cell or a face)
-    // take the prescribed values, unless they are constrained already.
-    const auto prescribe = [&](const auto              &object,
+    // The components in @p mask of vertex v of @p object (a cell or a face
+    // of @p cell) take the prescribed values, unless they are constrained
+    // already. (The FE index: with extra nodal fields the DoFHandler is an
+    // hp one, dofs/field_layout.h.)
+    const auto prescribe = [&](const auto              &cell,
+                               const auto              &object,
                                const unsigned int       v,
                                const std::vector<bool> &mask) {
       for (unsigned int comp = 0; comp < dim; ++comp)
         if (mask[comp])
           {
             const types::global_dof_index dof =
-              object->vertex_dof_index(v, comp);
+              object->vertex_dof_index(v, comp, cell->active_fe_index());
             if (!relevant_dofs.is_element(dof) || c.is_constrained(dof))
               continue;
             c.add_line(dof);
@@ -108,7 +111,7 @@ namespace pg
           if (cell->face(f)->at_boundary() &&
               cell->face(f)->boundary_id() == id)
             for (const unsigned int v : cell->face(f)->vertex_indices())
-              prescribe(cell->face(f), v, mask);
+              prescribe(cell, cell->face(f), v, mask);
 
     for (const auto &[coordinates, mask] : boundary_conditions.fixed_points)
       {
@@ -132,7 +135,7 @@ namespace pg
           for (const unsigned int v : cell->vertex_indices())
             if (cell->vertex_index(v) == vertex)
               {
-                prescribe(cell, v, mask);
+                prescribe(cell, cell, v, mask);
                 break;
               }
       }
@@ -153,7 +156,7 @@ namespace pg
             if (inside(cell->vertex(v)))
               {
                 found = true;
-                prescribe(cell, v, box.components);
+                prescribe(cell, cell, v, box.components);
               }
         std::string corners;
         for (const auto *corner : {&box.lower, &box.upper})
@@ -205,7 +208,8 @@ namespace pg
                 {
                   std::array<types::global_dof_index, dim> dofs;
                   for (unsigned int comp = 0; comp < dim; ++comp)
-                    dofs[comp] = cell->face(f)->vertex_dof_index(v, comp);
+                    dofs[comp] = cell->face(f)->vertex_dof_index(
+                      v, comp, cell->active_fe_index());
                   if (!relevant_dofs.is_element(dofs[0]))
                     continue;
                   int pivot = -1;

@@ -41,7 +41,14 @@ namespace pg
                      Mesh::mark_meshfree_cells(geometry, triangulation);
 
     dof_handler.reinit(triangulation);
-    dof_handler.distribute_dofs(fe);
+    if (formulation.n_nodal_fields() > 0)
+      {
+        field_layout =
+          std::make_unique<FieldLayout<dim>>(formulation.n_nodal_fields());
+        field_layout->distribute_dofs(dof_handler, meshfree);
+      }
+    else
+      dof_handler.distribute_dofs(fe);
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       Assert(fe.system_to_component_index(i).first == i % dim &&
                fe.system_to_component_index(i).second == i / dim,

@@ -44,9 +44,10 @@ namespace pg
     const Triangulation<dim> &tria = dof_handler.get_triangulation();
     AssertDimension(meshfree.size(), tria.n_active_cells());
 
+    // (set on the owned cells; deal.II sends them to the ghosts)
     if (n_fields > 0)
       for (const auto &cell : dof_handler.active_cell_iterators())
-        if (!cell->is_artificial())
+        if (cell->is_locally_owned())
           cell->set_active_fe_index(meshfree[cell->active_cell_index()] ?
                                       meshfree_cell_index :
                                       fe_cell_index);

@@ -18,13 +18,13 @@ namespace pg
     std::vector<types::global_dof_index> dofs;
     for (const unsigned int k : owned_families)
       for (const unsigned int b : families.members(k))
-        for (unsigned int c = 0; c < dim; ++c)
+        for (unsigned int c = 0; c < particles.n_components(); ++c)
           dofs.push_back(particles.dof(b, c));
-    std::vector<types::global_dof_index> cell_dofs(
-      dof_handler.get_fe().n_dofs_per_cell());
+    std::vector<types::global_dof_index> cell_dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
+          cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
           cell->get_dof_indices(cell_dofs);
           dofs.insert(dofs.end(), cell_dofs.begin(), cell_dofs.end());
         }

@@ -42,7 +42,8 @@ namespace pg
     positions.resize(n);
     volumes.assign(n, 0.);
     spacings.assign(n, 0.);
-    dofs.resize(n);
+    dofs.assign(n, {});
+    components = dim;
     area_vectors.assign(n, {});
     interface.resize(n);
     interface_areas.assign(n, Tensor<1, dim>());
@@ -76,7 +77,11 @@ namespace pg
               const unsigned int k = particle_of_vertex[cell->vertex_index(i)];
               for (const unsigned int q : fe_values.quadrature_point_indices())
                 volumes[k] += fe_values.shape_value(i, q) * fe_values.JxW(q);
-              for (unsigned int c = 0; c < dim; ++c)
+              // u first, then the extra nodal fields of the meshfree
+              // cells' element (dofs/field_layout.h), if any
+              components = cell->get_fe().n_dofs_per_vertex();
+              AssertIndexRange(components, dim + 3);
+              for (unsigned int c = 0; c < components; ++c)
                 dofs[k][c] = cell->vertex_dof_index(i, c);
             }
 
@@ -251,7 +256,17 @@ namespace pg
   ParticleSet<dim>::dof(const unsigned int k, const unsigned int c) const
   {
     AssertIndexRange(k, dofs.size());
+    AssertIndexRange(c, components);
     return dofs[k][c];
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ParticleSet<dim>::n_components() const
+  {
+    return components;
   }
 
 

@@ -22,7 +22,7 @@ namespace pg
                              const Vector<double>   &u_all)
     {
       const auto &formulation = *view.formulation;
-      Assert(formulation.condensed_fields(), ExcInternalError());
+      Assert(formulation.mixed(), ExcInternalError());
       const auto *split =
         dynamic_cast<const Materials::VolumetricSplit<dim> *>(view.material);
       AssertThrow(split != nullptr, ExcInternalError());
@@ -52,6 +52,20 @@ namespace pg
               y[b][c] = particles.position(members[b])[c] -
                         particles.position(k)[c] +
                         u_all[particles.dof(members[b], c)];
+          if (formulation.n_nodal_fields() > 0)
+            {
+              // U2P1C, Unl+P1C: the nodal values (unknowns vartheta =
+              // Theta - theta(I))
+              Tensor<2, dim> identity;
+              for (unsigned int i = 0; i < dim; ++i)
+                identity[i][i] = 1.;
+              field.particle_pressure[k] = u_all[particles.dof(k, dim)];
+              field.particle_dilatation[k] =
+                split->volume_measure(identity) +
+                u_all[particles.dof(k, dim + 1)];
+              note(field.particle_pressure[k]);
+              continue;
+            }
           if (ppg)
             view.family_elements->build_master_table(k, master_table);
           const CondensedPressure value =

@@ -102,12 +102,17 @@ namespace pg
                                       const Point<dim>     &reference,
                                       const Vector<double> &u_all) const
     {
-      std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
+      // (cell->get_fe(): a meshfree cell may carry extra nodal fields)
+      const FiniteElement<dim>            &cell_fe = cell->get_fe();
+      std::vector<types::global_dof_index> dofs(cell_fe.n_dofs_per_cell());
       cell->get_dof_indices(dofs);
       std::vector<double> value(dim, 0.);
       for (unsigned int j = 0; j < dofs.size(); ++j)
-        value[fe->system_to_component_index(j).first] +=
-          fe->shape_value(j, reference) * u_all[dofs[j]];
+        {
+          const unsigned int c = cell_fe.system_to_component_index(j).first;
+          if (c < dim)
+            value[c] += cell_fe.shape_value(j, reference) * u_all[dofs[j]];
+        }
       return value;
     }
 

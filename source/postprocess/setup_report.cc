@@ -39,7 +39,7 @@ namespace pg
             }
           mean_family /= families.n_families();
         }
-      const bool mixed = formulation.condensed_fields();
+      const bool mixed = formulation.mixed();
       const bool unl_p0 =
         (formulation.fields == FormulationCode::Fields::condensed_p0);
       // Q1P0 is called H1P0 in 3-D (Table 7.4)
@@ -54,6 +54,8 @@ namespace pg
               << (unl_p0 ? "UnlP0" :
                   formulation.fields == FormulationCode::Fields::condensed_p1 ?
                            "U2P1" :
+                  formulation.fields == FormulationCode::Fields::nodal_p1 ?
+                           (formulation.bubble ? "Unl+P1C" : "U2P1C") :
                   formulation.points == FormulationCode::Points::unl ? "Unl" :
                   formulation.points == FormulationCode::Points::u1 &&
                       formulation.implicit_gradients ?

@@ -57,7 +57,7 @@ namespace pg
                                {"total", view.total_timer->wall_time()}};
       // The condensed pressure of a mixed formulation: its range goes to
       // summary.json, its field to the VTU files.
-      const bool     mixed = view.formulation->condensed_fields();
+      const bool     mixed = view.formulation->mixed();
       Vector<double> u_full;
       std::optional<CondensedPressureField> pressure;
       if (mixed || prm.output.vtu)
@@ -88,14 +88,23 @@ namespace pg
       const MPI_Comm comm     = view.mpi_communicator;
       DataOut<dim>   data_out;
       data_out.attach_dof_handler(*view.dof_handler);
-      const std::vector<std::string> names(dim, "displacement");
-      data_out.add_data_vector(
-        u_full,
-        names,
-        DataOut<dim>::type_dof_data,
-        std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-          dim,
-          DataComponentInterpretation::component_is_part_of_vector));
+      // U2P1C, Unl+P1C: the nodal pressure and Theta - theta(I) (zero on
+      // the FE cells, whose condensed fields are the cell data below)
+      std::vector<std::string> names(dim, "displacement");
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(
+          dim, DataComponentInterpretation::component_is_part_of_vector);
+      if (view.formulation->n_nodal_fields() > 0)
+        {
+          names.emplace_back("nodal_pressure");
+          names.emplace_back("nodal_dilatation_change");
+          interpretation.resize(dim + 2,
+                                DataComponentInterpretation::component_is_scalar);
+        }
+      data_out.add_data_vector(u_full,
+                               names,
+                               DataOut<dim>::type_dof_data,
+                               interpretation);
       // meshfree cells show the particles' F (section "What a run writes")
       const std::vector<Tensor<2, dim>> particle_F =
         view.particle_deformation_gradients();

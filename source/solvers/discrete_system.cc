@@ -2,6 +2,7 @@
 #include <pg/constraints/boundary_constraints.h>
 #include <pg/constraints/support_check.h>
 #include <pg/elements/family_group.h>
+#include <pg/elements/nodal_pressure_group.h>
 #include <pg/elements/u1_stabilisation.h>
 #include <pg/elements/unit_stress_residual.h>
 #include <pg/postprocess/problem_view.h>
@@ -104,10 +105,11 @@ namespace pg
                                            owned_dofs);
 
     // The element groups: Q1 cells first, then the families (PG or CPD).
-    // The mixed codes (UnlP0, FEM Q1P0) condense p and Theta per element
-    // with the isochoric/volumetric split of the material.
+    // The mixed codes (UnlP0, U2P1, FEM Q1P0) condense p and Theta per
+    // element with the isochoric/volumetric split of the material; U2P1C
+    // and Unl+P1C have them as nodal DoFs of the particles.
     const Materials::VolumetricSplit<dim> *condensed_pressure = nullptr;
-    if (formulation.condensed_fields())
+    if (formulation.mixed())
       {
         condensed_pressure =
           dynamic_cast<const Materials::VolumetricSplit<dim> *>(&material);
@@ -124,6 +126,14 @@ namespace pg
                                         discretization.families,
                                         particles,
                                         *discretization.cpd);
+    else if (formulation.n_nodal_fields() > 0)
+      family_group = std::make_unique<NodalPressureFamilyGroup<dim>>(
+        discretization.owned_families,
+        discretization.families,
+        particles,
+        discretization.family_tables,
+        *condensed_pressure,
+        formulation.bubble);
     else
       {
         auto families = std::make_unique<FamilyGroup<dim>>(
@@ -160,7 +170,7 @@ namespace pg
       }
     // Mixed elements: p and Theta as Newton iterates (not for the explicit
     // integrator, which has no Newton updates: the closed form)
-    condensed_field_iterates = formulation.condensed_fields() &&
+    condensed_field_iterates = formulation.mixed() &&
                                prm.newton.linearized_condensed_fields &&
                                prm.time.integrator != "leapfrog";
     if (condensed_field_iterates)

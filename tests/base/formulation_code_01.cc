@@ -59,7 +59,11 @@ main()
                                  "VCPBG U2P1",
                                  "PBG U2P1",
                                  "VCPBG U1SIG",
-                                 "PBG U1SIG"})
+                                 "PBG U1SIG",
+                                 "VCPBG U2P1C",
+                                 "PBG U2P1C",
+                                 "VCPBG Unl+P1C",
+                                 "VCPBG V5sn Unl+P1C noBC"})
     {
       const FormulationCode f     = parse_formulation_code(code);
       const FormulationCode again = parse_formulation_code(f.text);
@@ -70,6 +74,7 @@ main()
         again.variational_consistency == f.variational_consistency &&
         again.correction_function == f.correction_function &&
         again.vc_boundary == f.vc_boundary && again.fields == f.fields &&
+        again.bubble == f.bubble &&
         !again.bond_correction_by_default;
       deallog << std::left << std::setw(20) << code << " -> " << std::setw(22)
               << f.text << " BC " << (f.bond_correction ? "on " : "off")
@@ -87,7 +92,9 @@ main()
         "VCPPG2 V3sn UnlP0", "PBG UnlP0 Unl",  "PBG IUnlP0",
         "VCPPG U2P1",        "FEM Q2",         "FEM Q1P0 H1P0",
         "BCPBG U2P1",        "PBG U2P1 U2",    "VCPPG U1SUnl",
-        "VCPPG U1SIG",       "VC2PPG V2s U2",  "BCPBG U1SIG"})
+        "VCPPG U1SIG",       "VC2PPG V2s U2",  "BCPBG U1SIG",
+        "VCPPG Unl+P1C",     "PPG U2P1C",      "BCPBG U2P1C",
+        "PBG Unl+P1C U2P1C"})
     try
       {
         parse_formulation_code(code);

@@ -13,8 +13,7 @@ namespace pg
    * table's defaults: BC for every first-order formulation (Unl; U1 has no
    * bond to correct, U2 is second order), V3 for PPG, V5 for PBG, the
    * boundary option sn, TL. "noBC" switches the bond correction
-   * off. Parts that are not built yet (the mixed formulations other than
-   * UnlP0 and Q1P0/H1P0, U1SIG, UL) are rejected with a "not yet available"
+   * off. Parts that are not built yet (IUnlP0, UL) are rejected with a "not yet available"
    * message, never ignored. The readings where the table is silent are in
    * doc/ambiguities.md.
    */
@@ -63,7 +62,16 @@ namespace pg
        * Theta linear per family (p^k + grad p^k . (X - X^k)) and condensed;
        * the FE cells of a coupled model are Q1P0/H1P0
        */
-      condensed_p1
+      condensed_p1,
+      /**
+       * U2P1C (eq. 6.11, pg-methods.md section 12.2.2) and Unl+P1C (eqs.
+       * 6.12-6.16, section 12.2.3): p and Theta are nodal unknowns of the
+       * particles (two extra global DoFs each, dofs/field_layout.h), linear
+       * in each family with the gradient of the family's shape functions
+       * at the master; Unl+P1C adds a condensed bubble (#bubble). The FE
+       * cells of a coupled model are Q1P0/H1P0.
+       */
+      nodal_p1
     };
 
     /** The VC correction function (eqs. 5.60-5.64). */
@@ -96,6 +104,11 @@ namespace pg
      * Q1P0/H1P0 cells with UnlP0 families, Q1 cells otherwise.
      */
     Fields fields = Fields::displacement;
+    /**
+     * Unl+P1C: the displacement of every family is enriched with a bubble
+     * u_b (eqs. 6.12-6.16), condensed per family.
+     */
+    bool bubble = false;
     /** First-order variational consistency (section 11). */
     bool variational_consistency;
     /**
@@ -132,13 +145,33 @@ namespace pg
     notice() const;
 
     /**
-     * True for the mixed codes whose p and Theta are condensed per element
-     * (UnlP0, U2P1, FEM Q1P0/H1P0).
+     * True for every mixed (u, p, Theta) code: UnlP0, U2P1, U2P1C, Unl+P1C
+     * and FEM Q1P0/H1P0. Their FE cells are Q1P0/H1P0 and their material
+     * needs the isochoric/volumetric split.
+     */
+    bool
+    mixed() const
+    {
+      return fields != Fields::displacement;
+    }
+    /**
+     * True for the mixed codes whose p and Theta are condensed per family
+     * (UnlP0, U2P1, FEM Q1P0/H1P0); false for U2P1C and Unl+P1C, whose p
+     * and Theta are nodal unknowns.
      */
     bool
     condensed_fields() const
     {
-      return fields != Fields::displacement;
+      return fields == Fields::condensed_p0 || fields == Fields::condensed_p1;
+    }
+    /**
+     * The number of extra nodal fields of the particles: 2 (p and Theta)
+     * for U2P1C and Unl+P1C, else 0.
+     */
+    unsigned int
+    n_nodal_fields() const
+    {
+      return fields == Fields::nodal_p1 ? 2 : 0;
     }
 
     /**

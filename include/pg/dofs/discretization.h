@@ -3,6 +3,7 @@
 
 #include <pg/base/formulation_code.h>
 #include <pg/base/global.h>
+#include <pg/dofs/field_layout.h>
 #include <pg/elements/cpd_interactions.h>
 #include <pg/elements/cpd_parameters.h>
 #include <pg/elements/discretization_parameters.h>
@@ -77,10 +78,21 @@ namespace pg
     Parameters::Geometry geometry;
 
     parallel::shared::Triangulation<dim> triangulation;
-    /** FESystem(FE_Q(1), dim) of the displacement and its FE_Q(1). */
+    /**
+     * FESystem(FE_Q(1), dim) of the displacement and its FE_Q(1). With extra
+     * nodal fields (U2P1C, Unl+P1C) the DoFHandler is an hp one
+     * (#field_layout): its FE cells have fe's DoFs (and FE_Nothing for the
+     * fields), its meshfree cells FESystem(FE_Q(1)^dim, FE_Q(1)^2); use
+     * cell->get_fe() there, and fe only on FE cells.
+     */
     const FESystem<dim> fe;
     const FE_Q<dim>     fe_scalar;
     DoFHandler<dim>     dof_handler;
+    /**
+     * The layout of u and the extra nodal fields (null without extra
+     * fields, where dof_handler has fe on every cell).
+     */
+    std::unique_ptr<FieldLayout<dim>> field_layout;
     /** Meshfree flag of every active cell (by active cell index). */
     std::vector<bool> meshfree;
 

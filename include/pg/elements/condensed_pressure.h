@@ -60,13 +60,23 @@ namespace pg
      * last assembly with a tangent; empty before it.
      */
     std::vector<double> a, b, S, T;
+    /**
+     * Unl+P1C (eqs. 6.12-6.16): the family's bubble coefficients u_b (dim
+     * values, displacement per length) and the linearisation of its local
+     * equation r_b = 0 at the last tangent assembly,
+     *   d u_b = bubble_a + bubble_S du
+     * (bubble_a = -K_bb^-1 r_b, bubble_S = -K_bb^-1 K_bg, dim x n_dofs row
+     * by row); empty for the other elements.
+     */
+    std::vector<double> bubble, bubble_a, bubble_S;
   };
 
   /**
    * The local update after a Newton update: @p iterate's coefficients +=
-   * (a + S du, b + T (a + S du)) with the element's update @p du (local
-   * DoFs, node-major). Nothing if no tangent has been assembled at this
-   * iterate.
+   * (a + S du, b + T (a + S du)) and its bubble += bubble_a + bubble_S du,
+   * with the element's update @p du (local DoFs, in the order of the
+   * element's get_dof_indices()). Nothing if no tangent has been assembled
+   * at this iterate.
    */
   void
   update_condensed_fields(CondensedFieldIterate     &iterate,

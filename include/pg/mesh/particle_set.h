@@ -30,7 +30,8 @@ namespace pg
     /**
      * Collect the particles of the cells marked in @p meshfree (indexed by
      * active_cell_index) of @p dof_handler, whose finite element must be
-     * FESystem(FE_Q(1), dim). Computes the lumped volumes
+     * FESystem(FE_Q(1), dim), or on the meshfree cells FESystem(FE_Q(1)^dim,
+     * FE_Q(1)^n) with n extra nodal fields (dofs/field_layout.h). Computes the lumped volumes
      * V^k = sum over meshfree cells of the integral of N_k, the local
      * spacing, and the geometric area vectors of the boundary parts.
      */
@@ -53,9 +54,17 @@ namespace pg
     double
     spacing(const unsigned int k) const;
 
-    /** The global DoF of component @p c of particle k. */
+    /**
+     * The global DoF of component @p c of particle k: c < dim the
+     * displacement, c = dim + f the extra nodal field f (the pressure and
+     * the dilatation of U2P1C and Unl+P1C).
+     */
     types::global_dof_index
     dof(const unsigned int k, const unsigned int c) const;
+
+    /** dim plus the number of extra nodal fields of the particles. */
+    unsigned int
+    n_components() const;
 
     /** Global vertex index of particle k. */
     unsigned int
@@ -109,7 +118,8 @@ namespace pg
     std::vector<Point<dim>>                                   positions;
     std::vector<double>                                       volumes;
     std::vector<double>                                       spacings;
-    std::vector<std::array<types::global_dof_index, dim>>     dofs;
+    std::vector<std::array<types::global_dof_index, dim + 2>> dofs;
+    unsigned int                                              components = dim;
     std::vector<unsigned int>                                 vertices;
     std::vector<std::map<types::boundary_id, Tensor<1, dim>>> area_vectors;
     std::vector<bool>                                         interface;

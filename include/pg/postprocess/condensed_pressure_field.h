@@ -38,7 +38,7 @@ namespace pg
     /**
      * The condensed fields of @p view's mixed formulation at the
      * displacement @p u_all (the full vector, on every rank). Collective.
-     * The formulation must be mixed (FormulationCode::condensed_fields()).
+     * The formulation must be mixed (FormulationCode::mixed()).
      */
     template <int dim>
     CondensedPressureField

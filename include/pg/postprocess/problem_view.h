@@ -80,7 +80,11 @@ namespace pg
 
       const Triangulation<dim> *triangulation = nullptr;
       const DoFHandler<dim>    *dof_handler   = nullptr;
-      /** FESystem(FE_Q(1), dim) of the displacement and its FE_Q(1). */
+      /**
+       * The element of the finite element (Q1) cells, FESystem(FE_Q(1), dim)
+       * (with extra nodal fields: plus FE_Nothing for them), and FE_Q(1).
+       * Meshfree cells may have another element: use cell->get_fe() there.
+       */
       const FiniteElement<dim> *fe = nullptr, *fe_scalar = nullptr;
       /** Meshfree flag of every active cell (by active cell index). */
       const std::vector<bool> *meshfree = nullptr;

@@ -1,0 +1,56 @@
+#ifndef pg_elements_nodal_pressure_group_h
+#define pg_elements_nodal_pressure_group_h
+
+#include <pg/elements/family_group.h>
+
+namespace pg
+{
+  /**
+   * The families of U2P1C and Unl+P1C (pg-methods.md sections
+   * 12.2.2-12.2.3): PBG families whose members carry the nodal pressure and
+   * dilatation as DoFs besides u (ParticleSet::dof(k, dim) and
+   * (k, dim + 1), dofs/field_layout.h). Element e has the DoFs u of its
+   * members node-major, then their p, then their vartheta = Theta - theta(I)
+   * (assemble_nodal_pressure_family()); Unl+P1C condenses its bubble and
+   * keeps it as a Newton iterate (keep_condensed_field_iterates()).
+   */
+  template <int dim>
+  class NodalPressureFamilyGroup : public FamilyGroupBase<dim>
+  {
+  public:
+    NodalPressureFamilyGroup(
+      const std::vector<unsigned int>         &owned_families,
+      const FamilySet<dim>                    &families,
+      const ParticleSet<dim>                  &particles,
+      const std::vector<QuadratureTable<dim>> &family_tables,
+      const Materials::VolumetricSplit<dim>   &material,
+      const bool                               bubble);
+
+    std::string
+    name() const override;
+
+    void
+    get_dof_indices(const unsigned int                    e,
+                    std::vector<types::global_dof_index> &dofs) const override;
+
+    unsigned int
+    n_evaluation_points(const unsigned int e) const override;
+
+    std::unique_ptr<GroupScratch>
+    create_scratch() const override;
+
+    void
+    assemble(const unsigned int           e,
+             const LinearAlgebra::Vector &u,
+             const ElementHistory        &history,
+             GroupScratch                &scratch,
+             LocalSystem                 &local) const override;
+
+  private:
+    const std::vector<QuadratureTable<dim>> &family_tables;
+    const Materials::VolumetricSplit<dim>   &material;
+    const bool                               bubble;
+  };
+} // namespace pg
+
+#endif

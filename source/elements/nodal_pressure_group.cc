@@ -1,0 +1,133 @@
+#include <pg/base/global_reader.h>
+#include <pg/elements/nodal_pressure.h>
+#include <pg/elements/nodal_pressure_group.h>
+
+namespace pg
+{
+  namespace
+  {
+    /** The members' positions and nodal fields of one family. */
+    template <int dim>
+    struct NodalPressureScratch : public GroupScratch
+    {
+      std::unique_ptr<GroupScratch>
+      clone() const override
+      {
+        return std::make_unique<NodalPressureScratch>();
+      }
+
+      std::vector<Tensor<1, dim>> y;
+      std::vector<double>         p, vartheta;
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  NodalPressureFamilyGroup<dim>::NodalPressureFamilyGroup(
+    const std::vector<unsigned int>         &owned_families,
+    const FamilySet<dim>                    &families,
+    const ParticleSet<dim>                  &particles,
+    const std::vector<QuadratureTable<dim>> &family_tables,
+    const Materials::VolumetricSplit<dim>   &material,
+    const bool                               bubble)
+    : FamilyGroupBase<dim>(owned_families, families, particles)
+    , family_tables(family_tables)
+    , material(material)
+    , bubble(bubble)
+  {
+    AssertThrow(particles.n_components() == dim + 2, ExcInternalError());
+  }
+
+
+
+  template <int dim>
+  std::string
+  NodalPressureFamilyGroup<dim>::name() const
+  {
+    return bubble ? "Unl+P1C families" : "U2P1C families";
+  }
+
+
+
+  template <int dim>
+  void
+  NodalPressureFamilyGroup<dim>::get_dof_indices(
+    const unsigned int                    e,
+    std::vector<types::global_dof_index> &dofs) const
+  {
+    const auto members   = this->families.members(this->owned_families[e]);
+    const unsigned int n = members.size();
+    dofs.resize(n * (dim + 2));
+    for (unsigned int b = 0; b < n; ++b)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          dofs[b * dim + c] = this->particles.dof(members[b], c);
+        dofs[n * dim + b]     = this->particles.dof(members[b], dim);
+        dofs[n * dim + n + b] = this->particles.dof(members[b], dim + 1);
+      }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  NodalPressureFamilyGroup<dim>::n_evaluation_points(const unsigned int e) const
+  {
+    return family_tables[e].n_points();
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<GroupScratch>
+  NodalPressureFamilyGroup<dim>::create_scratch() const
+  {
+    return std::make_unique<NodalPressureScratch<dim>>();
+  }
+
+
+
+  template <int dim>
+  void
+  NodalPressureFamilyGroup<dim>::assemble(const unsigned int           e,
+                                          const LinearAlgebra::Vector &u,
+                                          const ElementHistory &,
+                                          GroupScratch &scratch_base,
+                                          LocalSystem  &local) const
+  {
+    auto &scratch = static_cast<NodalPressureScratch<dim> &>(scratch_base);
+    const unsigned int                k       = this->owned_families[e];
+    const auto                        members = this->families.members(k);
+    const unsigned int                n       = members.size();
+    const LinearAlgebra::GlobalReader u_at(u);
+    get_dof_indices(e, local.dofs);
+    scratch.y.resize(n);
+    scratch.p.resize(n);
+    scratch.vartheta.resize(n);
+    for (unsigned int b = 0; b < n; ++b)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          scratch.y[b][c] = this->particles.position(members[b])[c] -
+                            this->particles.position(k)[c] +
+                            u_at[local.dofs[b * dim + c]];
+        scratch.p[b]        = u_at[local.dofs[n * dim + b]];
+        scratch.vartheta[b] = u_at[local.dofs[n * dim + n + b]];
+      }
+    assemble_nodal_pressure_family(family_tables[e],
+                                   scratch.y,
+                                   scratch.p,
+                                   scratch.vartheta,
+                                   material,
+                                   bubble,
+                                   local.residual,
+                                   local.with_matrix ? &local.matrix : nullptr,
+                                   bubble ? this->condensed_field_iterate(e) :
+                                            nullptr);
+  }
+
+
+
+  template class NodalPressureFamilyGroup<2>;
+  template class NodalPressureFamilyGroup<3>;
+} // namespace pg
