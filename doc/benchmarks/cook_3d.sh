@@ -11,7 +11,8 @@
 #   (b) nu = 0.4999999, direct solver (MUMPS), 2 load steps and
 #       'Stagnation tolerance = 1e-4' (the round-off floor of the residual
 #       is 1e-8 to 1e-5 |R_0| at K/mu = 5e6): FEM Q1, FEM H1P0, VCBCPBG V5sn
-#       Unl, BCPBG UnlP0, VCBCPBG V5sn UnlP0; reference: FEM H1P0 on the
+#       Unl, BCPBG UnlP0, VCBCPBG V5sn UnlP0, VCBCPBG V5sn Unl+P1C (nodal
+#       p and Theta); reference: FEM H1P0 on the
 #       regular meshes n = 16, 24, 32, extrapolated. The mixed codes run with the default
 #       'Condensed fields = linearized'; with 'equilibrium' (CONDENSED=
 #       equilibrium) they need 32 load steps (LOAD_STEPS_B=32) and some 500
@@ -101,6 +102,7 @@ for n in 4 8 12 16 24; do
   run b "VCBCPBG V5sn Unl" "VCBCPBG V5sn Unl" $n 0.3 0.4999999 direct $steps 1e-4
   run b "BCPBG UnlP0" "BCPBG UnlP0" $n 0.3 0.4999999 direct $steps 1e-4
   run b "VCBCPBG V5sn UnlP0" "VCBCPBG V5sn UnlP0" $n 0.3 0.4999999 direct $steps 1e-4
+  run b "VCBCPBG V5sn Unl+P1C" "VCBCPBG V5sn Unl+P1C" $n 0.3 0.4999999 direct $steps 1e-4
 done
 fi
 rm -rf "$WORK"
@@ -155,7 +157,8 @@ for k, (panel, title) in enumerate((("a", "nu = 0.357, displacement"),
         data = [r for r in rows if r[0] == panel and r[1] == label]
         if not data:
             continue
-        particles = [int(r[3]) // 3 for r in data]
+        # (Unl+P1C: 3 displacements, p and Theta per node)
+        particles = [int(r[3]) // (5 if "P1C" in label else 3) for r in data]
         ax[k].semilogx(particles, [float(r[4]) for r in data], marker="o", label=label)
         if ref is not None:
             ax[2 + k].loglog([float(r[9]) for r in data],

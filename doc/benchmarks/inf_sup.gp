@@ -9,8 +9,8 @@ set key bottom right
 set grid
 set xrange [0.025:0.6]
 set yrange [5e-4:1.2]
-names = "q1 q1p0 pbg_unl bcpbg_unl pbg_u1 pbg_unlp0 bcpbg_unlp0 pbg_u2 pbg_u2p1"
-titles = "'Q1 (displacement)' 'Q1P0' 'PBG Unl noBC' 'BCPBG Unl' 'PBG U1 (WTE1)' 'PBG UnlP0 noBC' 'BCPBG UnlP0' 'PBG U2' 'PBG U2P1 (on U2)'"
+names = "q1 q1p0 pbg_unl bcpbg_unl pbg_u1 pbg_unlp0 bcpbg_unlp0 pbg_u2 pbg_u2p1 pbg_u2p1c bcpbg_unl_p1c"
+titles = "'Q1 (displacement)' 'Q1P0' 'PBG Unl noBC' 'BCPBG Unl' 'PBG U1 (WTE1)' 'PBG UnlP0 noBC' 'BCPBG UnlP0' 'PBG U2' 'PBG U2P1 (on U2)' 'PBG U2P1C (on U2)' 'BCPBG Unl+P1C'"
 do for [tag in "regular distorted"] {
   set title sprintf("clamped unit square, %s mesh%s", tag, tag eq "distorted" ? " (0.3)" : "")
   plot for [i=1:words(names)] sprintf("doc/benchmarks/inf_sup/%s_%s.txt", word(names,i), tag) \

@@ -41,6 +41,8 @@ for d in 0 0.3; do
   run bcpbg_unlp0_$tag "BCPBG Unl" P0          $d
   run pbg_u2_$tag     "PBG U2"    displacement $d
   run pbg_u2p1_$tag   "PBG U2"    P1           $d
+  run pbg_u2p1c_$tag  "PBG U2"    P1C          $d
+  run bcpbg_unl_p1c_$tag "BCPBG Unl" P1C+bubble $d
 done
 rm -rf "$WORK"
 gnuplot doc/benchmarks/inf_sup.gp

@@ -12,7 +12,8 @@
 # figure from an existing results.txt; ONLY=<label>: run one method and
 # append its rows). U1SUnl (eq. 6.18) is shown with the displacement
 # formulations: its pseudo-energy takes nu~ = 0.49; the quadratic U2 and its
-# mixed U2P1 (eq. 6.10, p and Theta linear per family) as a pair too.
+# mixed U2P1 (eq. 6.10, p and Theta linear per family) as a pair too, and
+# the mixed codes with nodal p and Theta, Unl+P1C and U2P1C.
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/near_incompressible_cook.sh build-release/applications/pg_solve/pg_solve
 set -e
@@ -98,6 +99,9 @@ for N in 4 8 16 32 64; do
   run "VCPBG V5sn U2" "VCPBG V5sn U2" $N all 3.51
   run "VCPBG V5sn U2P1" "VCPBG V5sn U2P1" $N all 3.51
   run "VCPBG V5sn U1SIG" "VCPBG V5sn U1SIG" $N
+  # nodal p and Theta (eqs. 6.11-6.16)
+  run "VCBCPBG V5sn Unl+P1C" "VCBCPBG V5sn Unl+P1C" $N
+  run "VCPBG V5sn U2P1C" "VCPBG V5sn U2P1C" $N all 3.51
 done
 rm -rf "$WORK"
 fi
@@ -121,8 +125,8 @@ fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
 for label in dict.fromkeys(r[0] for r in rows if r[0] != "reference"):
     data = [r for r in rows if r[0] == label]
     dofs = [int(r[3]) for r in data]
-    dashed = ("Unl" in label and "P0" not in label or label == "FEM Q1"
-              or label.endswith(" U2"))
+    dashed = ("Unl" in label and "P0" not in label and "P1C" not in label
+              or label == "FEM Q1" or label.endswith(" U2"))
     style = "--" if dashed else "-"
     ax[0].semilogx(dofs, [float(r[4]) for r in data], style, marker="o", label=label)
     ax[1].loglog(dofs, [abs(float(r[4]) - ref) / ref for r in data], style, marker="o", label=label)

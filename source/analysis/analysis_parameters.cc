@@ -37,14 +37,19 @@ namespace pg
         prm.declare_entry(
           "Pressure space",
           "displacement",
-          Patterns::Selection("displacement|P0|P1"),
+          Patterns::Selection("displacement|P0|P1|P1C|P1C+bubble"),
           "inf-sup: the pressure space of T_h. displacement: the "
           "displacement-based formulation as it is (T_h from the full "
           "div-div term, K = 1, mu = 0, at every evaluation point). P0: one "
           "constant pressure per element (Q1 cell or PG family), condensed "
           "exactly; Q1P0 for FEM, UnlP0 for PBG families. P1: a linear "
           "pressure per PBG family (U2P1 with 'Formulation = PBG U2'), "
-          "constant per Q1 cell.");
+          "constant per Q1 cell. P1C: a nodal pressure at every particle, "
+          "linear in each family with the gradient of its functions at the "
+          "master (U2P1C with 'Formulation = PBG U2', eq. 6.11). "
+          "P1C+bubble: the same with the bubble of eqs. 6.12-6.16 added to "
+          "every family's displacement (Unl+P1C with 'Formulation = BCPBG "
+          "Unl'). With P1C, T_h = B^T M^-1 B is dense.");
         prm.declare_entry("Inf-sup subdivisions",
                           "2, 4, 8, 16, 32",
                           Patterns::List(Patterns::Integer(1)),

@@ -192,6 +192,20 @@ namespace pg
         };
         copy(T, t);
         copy(S, s);
+        return compute_value(t, s, relative_tolerance);
+      }
+
+
+
+      Value
+      compute_value(LAPACKFullMatrix<double> &t,
+                    LAPACKFullMatrix<double> &s,
+                    const double              relative_tolerance)
+      {
+        const unsigned int n = t.m();
+        AssertThrow(n > 0,
+                    ExcMessage("The inf-sup test has no free unknowns: every "
+                               "DoF is constrained; use more subdivisions."));
 
         // S must be positive definite, else (7.11) is not a generalised
         // symmetric-definite problem: check by a Cholesky factorisation

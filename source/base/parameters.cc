@@ -379,27 +379,33 @@ namespace pg
         {
           // p and Theta are global unknowns: a saddle-point system
           // (pg-methods.md section 15), and no mass for them
-          AssertThrow(linear_solver.type == "direct",
-                      ExcBadParameter(
-                        "Linear solver/Type",
-                        linear_solver.type,
-                        "the formulation <" + code.text +
-                          "> has the pressure and the dilatation as nodal "
-                          "unknowns, so its tangent is an indefinite "
-                          "saddle-point matrix that CG and GMRES with "
-                          "algebraic multigrid do not solve. Set 'Type = "
-                          "direct'."));
-          AssertThrow(analysis.type == "static" && !time.dynamic(),
-                      ExcBadParameter(
-                        analysis.type != "static" ? "Analysis/Type" :
-                                                    "Time/Integrator",
-                        analysis.type != "static" ? analysis.type :
-                                                    time.integrator,
-                        "the formulation <" + code.text +
-                          "> (nodal pressure and dilatation) is available "
-                          "for quasi-static load stepping only so far. Use "
-                          "'Type = static' without an integrator, or the "
-                          "condensed mixed formulation 'VCPBG V5sn UnlP0'."));
+          AssertThrow(
+            linear_solver.type == "direct",
+            ExcBadParameter("Linear solver/Type",
+                            linear_solver.type,
+                            "the formulation <" + code.text +
+                              "> has the pressure and the dilatation as nodal "
+                              "unknowns, so its tangent is an indefinite "
+                              "saddle-point matrix that CG and GMRES with "
+                              "algebraic multigrid do not solve. Set 'Type = "
+                              "direct'."));
+          AssertThrow(
+            analysis.type == "static" && !time.dynamic(),
+            ExcBadParameter(
+              analysis.type != "static" ? "Analysis/Type" : "Time/Integrator",
+              analysis.type != "static" ? analysis.type : time.integrator,
+              "the formulation <" + code.text +
+                "> (nodal pressure and dilatation) is available "
+                "for quasi-static load stepping only so far. Use "
+                "'Type = static' without an integrator, or the "
+                "condensed mixed formulation 'VCPBG V5sn UnlP0'" +
+                (analysis.type == "inf-sup" ?
+                   std::string("; the inf-sup test of Unl+P1C (U2P1C) runs "
+                               "on its displacement formulation: "
+                               "'Formulation = BCPBG Unl' ('PBG U2') with "
+                               "'Pressure space = P1C+bubble' ('P1C')") :
+                   std::string()) +
+                "."));
         }
     }
 

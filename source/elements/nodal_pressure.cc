@@ -81,6 +81,35 @@ namespace pg
 
 
   template <int dim>
+  QuadratureTable<dim>
+  with_bubble_node(const QuadratureTable<dim> &table)
+  {
+    AssertThrow(table.test_is_trial, ExcNotImplemented());
+    const unsigned int n = table.n_nodes, n_q = table.n_points();
+    double             volume = 0;
+    Point<dim>         centroid;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        volume += table.weights[q];
+        centroid += table.weights[q] * table.points[q];
+      }
+    centroid /= volume;
+    QuadratureTable<dim>        augmented;
+    std::vector<Tensor<1, dim>> row(n + 1);
+    augmented.reinit(n + 1, true);
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        for (unsigned int a = 0; a < n; ++a)
+          row[a] = table.trial[q * n + a];
+        row[n] = table.points[q] - centroid;
+        augmented.add_point(table.weights[q], row, table.points[q]);
+      }
+    return augmented;
+  }
+
+
+
+  template <int dim>
   void
   assemble_nodal_pressure_family(const QuadratureTable<dim>        &table,
                                  const std::vector<Tensor<1, dim>> &y,
@@ -118,26 +147,13 @@ namespace pg
     std::vector<Tensor<1, dim>> beta;
     if (bubble)
       {
-        double     volume = 0;
-        Point<dim> centroid;
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            volume += table.weights[q];
-            centroid += table.weights[q] * table.points[q];
-          }
-        centroid /= volume;
-        augmented.reinit(n_u, true);
-        std::vector<Tensor<1, dim>> row(n_u);
+        augmented = with_bubble_node(table);
         beta.resize(n_q);
         std::vector<Tensor<2, dim>> F0(n_q);
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            for (unsigned int a = 0; a < n; ++a)
-              row[a] = table.trial[q * n + a];
-            beta[q] = table.points[q] - centroid;
-            row[n]  = beta[q];
-            augmented.add_point(table.weights[q], row, table.points[q]);
-            F0[q] = deformation_gradient(table, q, y);
+            beta[q] = augmented.trial[q * n_u + n];
+            F0[q]   = deformation_gradient(table, q, y);
           }
 
         // u_b: the iterate's, or local equilibrium r_b = 0
@@ -342,6 +358,10 @@ namespace pg
 
 
 
+  template QuadratureTable<2>
+  with_bubble_node(const QuadratureTable<2> &);
+  template QuadratureTable<3>
+  with_bubble_node(const QuadratureTable<3> &);
   template std::vector<double>
   nodal_field_interpolation(const QuadratureTable<2> &);
   template std::vector<double>

@@ -53,7 +53,7 @@ main(int argc, char **argv)
         "subsection Discretization\n  set Formulation = XPBG Unl\nend\n");
   check("formulation not yet available",
         "subsection Discretization\n"
-        "  set Formulation = VCPBG V5sn Unl+P1C\nend\n");
+        "  set Formulation = VCPBG V5sn IUnlP0\nend\n");
   check("mixed formulation on a material without the volumetric split",
         "subsection Discretization\n"
         "  set Formulation = VCPPG V3sn UnlP0\nend\n"

@@ -8,6 +8,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <string>
 #include <vector>
@@ -131,6 +132,16 @@ namespace pg
                     const AffineConstraints<double>   &constraints,
                     const double                       relative_tolerance,
                     const unsigned int                 max_size = 6000);
+
+      /**
+       * The same for dense @p t and @p s over the free unknowns (both are
+       * overwritten): the pressure spaces P1C and P1C+bubble, whose T_h
+       * couples all particles through the inverse pressure mass matrix.
+       */
+      Value
+      compute_value(LAPACKFullMatrix<double> &t,
+                    LAPACKFullMatrix<double> &s,
+                    const double              relative_tolerance);
 
       /**
        * The log-log slope -d log(beta) / d log(N) between two meshes with

@@ -47,6 +47,25 @@ namespace pg
                      LinearAlgebra::SparseMatrix &T,
                      LinearAlgebra::SparseMatrix &S);
 
+      /**
+       * The dense T_h and S_h of the nodal pressure spaces, 'Pressure space
+       * = P1C' or (@p bubble) 'P1C+bubble': the unknowns are the free
+       * displacement DoFs of @p level, then (@p bubble) dim bubble
+       * coefficients per family (eqs. 6.12-6.16). S_h is the H1 form of
+       * the Q1 cells and of the families' tables (with the bubble node);
+       * T_h = B^T M^-1 B with B_{k,i} = sum over the families of sum_q w_q
+       * pi_qk div N_i and M_{kl} = sum sum_q w_q pi_qk pi_ql (pi of eq.
+       * 6.11, nodal_field_interpolation()), plus the P0 projection of the
+       * Q1 cells. Returns the number of pressures n_p (particles and Q1
+       * cells).
+       */
+      static unsigned int
+      assemble_nodal_forms(const Access<dim>        &level,
+                           const bool                bubble,
+                           const unsigned int        max_size,
+                           LAPACKFullMatrix<double> &T,
+                           LAPACKFullMatrix<double> &S);
+
     private:
       const SetUpProblem set_up;
     };

@@ -33,6 +33,15 @@ namespace pg
   nodal_field_interpolation(const QuadratureTable<dim> &table);
 
   /**
+   * @p table with the bubble of Unl+P1C as one more node, n_nodes (eqs.
+   * 6.13, 6.15, 6.16): its trial vectors are X_q - X_c, X_c the weighted
+   * centroid of the points, so that sum_q w_q (X_q - X_c) = 0 (eq. 6.14).
+   */
+  template <int dim>
+  QuadratureTable<dim>
+  with_bubble_node(const QuadratureTable<dim> &table);
+
+  /**
    * The family residual and tangent of the mixed PBG formulations with
    * nodal pressure and dilatation, U2P1C (eq. 6.11) and Unl+P1C (eqs.
    * 6.12-6.16), pg-methods.md sections 12.2.2-12.2.3. With the point values
