@@ -122,14 +122,15 @@ try:
 except ImportError:
     sys.exit(0)
 fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
-for label in dict.fromkeys(r[0] for r in rows if r[0] != "reference"):
+for i, label in enumerate(dict.fromkeys(r[0] for r in rows if r[0] != "reference")):
     data = [r for r in rows if r[0] == label]
     dofs = [int(r[3]) for r in data]
     dashed = ("Unl" in label and "P0" not in label and "P1C" not in label
               or label == "FEM Q1" or label.endswith(" U2"))
     style = "--" if dashed else "-"
-    ax[0].semilogx(dofs, [float(r[4]) for r in data], style, marker="o", label=label)
-    ax[1].loglog(dofs, [abs(float(r[4]) - ref) / ref for r in data], style, marker="o", label=label)
+    color = plt.cm.tab20(i % 20)
+    ax[0].semilogx(dofs, [float(r[4]) for r in data], style, marker="o", color=color, label=label)
+    ax[1].loglog(dofs, [abs(float(r[4]) - ref) / ref for r in data], style, marker="o", color=color, label=label)
 ax[0].axhline(ref, color="k", lw=0.8)
 ax[0].set_xlabel("DoFs"); ax[0].set_ylabel("tip u_y")
 ax[1].set_xlabel("DoFs"); ax[1].set_ylabel("|u_y - u_ref| / u_ref")
