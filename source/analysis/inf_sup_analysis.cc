@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -27,6 +28,45 @@ namespace pg
       : Interface<dim>(access)
       , set_up(set_up)
     {}
+
+
+
+    namespace
+    {
+      /**
+       * Calls @p add(table, y, dofs) for every Q1 cell of @p view in the
+       * undeformed state (y^b = X^b - X^0): the cell part of both ways of
+       * assembling T_h and S_h.
+       */
+      template <int dim>
+      void
+      for_each_q1_cell(
+        const Postprocess::ProblemView<dim> &view,
+        const std::function<void(const QuadratureTable<dim> &,
+                                 const std::vector<Tensor<1, dim>> &,
+                                 const std::vector<types::global_dof_index> &)>
+          &add)
+      {
+        FEValues<dim>                        fe_values(*view.fe_scalar,
+                                QGauss<dim>(2),
+                                update_gradients | update_JxW_values);
+        QuadratureTable<dim>                 table;
+        std::vector<Tensor<1, dim>>          y;
+        std::vector<types::global_dof_index> dofs;
+        for (const auto &cell : *view.owned_fe_cells)
+          {
+            fe_values.reinit(
+              typename Triangulation<dim>::active_cell_iterator(cell));
+            fill_q1_table(fe_values, table);
+            dofs.resize(view.fe->n_dofs_per_cell());
+            cell->get_dof_indices(dofs);
+            y.resize(cell->n_vertices());
+            for (unsigned int b = 0; b < y.size(); ++b)
+              y[b] = cell->vertex(b) - cell->vertex(0);
+            add(table, y, dofs);
+          }
+      }
+    } // namespace
 
 
 
@@ -66,25 +106,16 @@ namespace pg
         zero_constraints.distribute_local_to_global(t_local, dofs, T);
         zero_constraints.distribute_local_to_global(s_local, dofs, S);
       };
-      FEValues<dim>                        fe_values(*view.fe_scalar,
-                              QGauss<dim>(2),
-                              update_gradients | update_JxW_values);
-      QuadratureTable<dim>                 table;
+      for_each_q1_cell<dim>(
+        view,
+        [&](const QuadratureTable<dim>                 &table,
+            const std::vector<Tensor<1, dim>>          &y,
+            const std::vector<types::global_dof_index> &dofs) {
+          add(table, y, dofs, 0);
+        });
       std::vector<Tensor<1, dim>>          y;
       std::vector<types::global_dof_index> dofs;
-      for (const auto &cell : *view.owned_fe_cells)
-        {
-          fe_values.reinit(
-            typename Triangulation<dim>::active_cell_iterator(cell));
-          fill_q1_table(fe_values, table);
-          dofs.resize(view.fe->n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          y.resize(cell->n_vertices());
-          for (unsigned int b = 0; b < y.size(); ++b)
-            y[b] = cell->vertex(b) - cell->vertex(0);
-          add(table, y, dofs, 0);
-        }
-      const ParticleSet<dim> &particles = *view.particles;
+      const ParticleSet<dim>              &particles = *view.particles;
       for (unsigned int f = 0; f < view.owned_families->size(); ++f)
         {
           const unsigned int k       = (*view.owned_families)[f];
@@ -154,22 +185,11 @@ namespace pg
       };
 
       // Q1 cells: P0 pressure, condensed per cell
-      FEValues<dim>                        fe_values(*view.fe_scalar,
-                              QGauss<dim>(2),
-                              update_gradients | update_JxW_values);
-      QuadratureTable<dim>                 table;
-      std::vector<Tensor<1, dim>>          y;
-      std::vector<types::global_dof_index> dofs;
-      for (const auto &cell : *view.owned_fe_cells)
-        {
-          fe_values.reinit(
-            typename Triangulation<dim>::active_cell_iterator(cell));
-          fill_q1_table(fe_values, table);
-          dofs.resize(view.fe->n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          y.resize(cell->n_vertices());
-          for (unsigned int b = 0; b < y.size(); ++b)
-            y[b] = cell->vertex(b) - cell->vertex(0);
+      for_each_q1_cell<dim>(
+        view,
+        [&](const QuadratureTable<dim>                 &table,
+            const std::vector<Tensor<1, dim>>          &y,
+            const std::vector<types::global_dof_index> &dofs) {
           index.resize(dofs.size());
           for (unsigned int i = 0; i < dofs.size(); ++i)
             index[i] = dense[dofs[i]];
@@ -177,7 +197,8 @@ namespace pg
           scatter(T);
           assemble_element(table, y, s_material, residual, &local);
           scatter(S);
-        }
+        });
+      std::vector<Tensor<1, dim>> y;
 
       // The families: S on the table (with the bubble node), B and M
       for (unsigned int f = 0; f < n_families; ++f)
