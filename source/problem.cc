@@ -263,21 +263,21 @@ namespace pg
     if (problem_view)
       return *problem_view;
     // filled once, after setup: the objects keep their addresses
-    auto &v                  = problem_view.emplace();
-    v.parameters             = &prm;
-    v.mpi_communicator       = comm;
-    v.root                   = root;
-    v.pcout                  = &pcout;
-    v.formulation            = &formulation;
-    v.material               = material.get();
-    v.triangulation          = &discretization.triangulation;
-    v.dof_handler            = &discretization.dof_handler;
+    auto &v            = problem_view.emplace();
+    v.parameters       = &prm;
+    v.mpi_communicator = comm;
+    v.root             = root;
+    v.pcout            = &pcout;
+    v.formulation      = &formulation;
+    v.material         = material.get();
+    v.triangulation    = &discretization.triangulation;
+    v.dof_handler      = &discretization.dof_handler;
     // the element of the FE cells (with extra nodal fields, the hp
     // collection's FE-cell element: u and FE_Nothing)
-    v.fe = discretization.field_layout ?
-             &discretization.field_layout
+    v.fe                     = discretization.field_layout ?
+                                 &discretization.field_layout
                 ->fe_collection()[FieldLayout<dim>::fe_cell_index] :
-             &discretization.fe;
+                                 &discretization.fe;
     v.fe_scalar              = &discretization.fe_scalar;
     v.meshfree               = &discretization.meshfree;
     v.particles              = &discretization.particles;

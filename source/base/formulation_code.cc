@@ -81,10 +81,11 @@ namespace pg
                                               "sn");
         }
       using Points = FormulationCode::Points;
-      text += (p0                                                   ? " UnlP0" :
-               code.fields == FormulationCode::Fields::condensed_p1 ? " U2P1" :
+      text += (p0 ? " UnlP0" :
+               code.fields == FormulationCode::Fields::condensed_p1 ?
+                    " U2P1" :
                code.fields == FormulationCode::Fields::nodal_p1 ?
-                                                       (code.bubble ? " Unl+P1C" : " U2P1C") :
+                    (code.bubble ? " Unl+P1C" : " U2P1C") :
                code.points == Points::unl                           ? " Unl" :
                code.points == Points::u1 && code.implicit_gradients ? " U1SIG" :
                code.points == Points::u1                            ? " U1" :
@@ -268,15 +269,15 @@ namespace pg
               ((w == "U1" || w == "U1SIG") ? FormulationCode::Points::u1 :
                (w == "U2" || w == "U2P1" || w == "U2P1C") ?
                                              FormulationCode::Points::u2 :
-               w == "U1SUnl"               ? FormulationCode::Points::u1s_unl :
-                                             FormulationCode::Points::unl);
+               w == "U1SUnl" ? FormulationCode::Points::u1s_unl :
+                               FormulationCode::Points::unl);
             if (w == "UnlP0")
               result.fields = FormulationCode::Fields::condensed_p0;
             if (w == "U2P1")
               result.fields = FormulationCode::Fields::condensed_p1;
             if (w == "U2P1C" || w == "Unl+P1C")
               result.fields = FormulationCode::Fields::nodal_p1;
-            result.bubble = (w == "Unl+P1C");
+            result.bubble             = (w == "Unl+P1C");
             result.implicit_gradients = (w == "U1SIG");
           }
         else if (w == "noBC")

@@ -359,8 +359,9 @@ namespace pg
                         material.model,
                         "the formulation <" + code.text +
                           "> (subsection 'Discretization') is mixed: it "
-                          "condenses a pressure and a dilatation per element "
-                          "(eqs. 6.2, 6.3), which needs the split of the "
+                          "has a pressure and a dilatation (per element, or "
+                          "nodal for U2P1C and Unl+P1C; eqs. 6.2, 6.3), "
+                          "which needs the split of the "
                           "energy into isochoric and volumetric parts (eqs. "
                           "2.43-2.44). Set 'Model = isochoric-volumetric "
                           "neo-Hooke' (finite strain; with 'Bulk modulus' and "

@@ -208,8 +208,10 @@ namespace pg
                 {
                   std::array<types::global_dof_index, dim> dofs;
                   for (unsigned int comp = 0; comp < dim; ++comp)
-                    dofs[comp] = cell->face(f)->vertex_dof_index(
-                      v, comp, cell->active_fe_index());
+                    dofs[comp] =
+                      cell->face(f)->vertex_dof_index(v,
+                                                      comp,
+                                                      cell->active_fe_index());
                   if (!relevant_dofs.is_element(dofs[0]))
                     continue;
                   int pivot = -1;

@@ -59,10 +59,9 @@ namespace pg
               Tensor<2, dim> identity;
               for (unsigned int i = 0; i < dim; ++i)
                 identity[i][i] = 1.;
-              field.particle_pressure[k] = u_all[particles.dof(k, dim)];
-              field.particle_dilatation[k] =
-                split->volume_measure(identity) +
-                u_all[particles.dof(k, dim + 1)];
+              field.particle_pressure[k]   = u_all[particles.dof(k, dim)];
+              field.particle_dilatation[k] = split->volume_measure(identity) +
+                                             u_all[particles.dof(k, dim + 1)];
               note(field.particle_pressure[k]);
               continue;
             }

@@ -35,8 +35,9 @@ namespace pg
                   for (unsigned int c = 0; c < dim; ++c)
                     if (mask[c])
                       {
-                        const auto dof = cell->face(f)->vertex_dof_index(
-                          v, c, cell->active_fe_index());
+                        const auto dof =
+                          cell->face(f)
+                            ->vertex_dof_index(v, c, cell->active_fe_index());
                         if (!counted[dof] && owned_dofs.is_element(dof))
                           reaction[c] += force[dof];
                         counted[dof] = true;

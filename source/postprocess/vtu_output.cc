@@ -57,8 +57,8 @@ namespace pg
                                {"total", view.total_timer->wall_time()}};
       // The condensed pressure of a mixed formulation: its range goes to
       // summary.json, its field to the VTU files.
-      const bool     mixed = view.formulation->mixed();
-      Vector<double> u_full;
+      const bool                            mixed = view.formulation->mixed();
+      Vector<double>                        u_full;
       std::optional<CondensedPressureField> pressure;
       if (mixed || prm.output.vtu)
         u_full = view.gather_displacement(); // collective
@@ -93,13 +93,14 @@ namespace pg
       std::vector<std::string> names(dim, "displacement");
       std::vector<DataComponentInterpretation::DataComponentInterpretation>
         interpretation(
-          dim, DataComponentInterpretation::component_is_part_of_vector);
+          dim,
+          DataComponentInterpretation::component_is_part_of_vector);
       if (view.formulation->n_nodal_fields() > 0)
         {
           names.emplace_back("nodal_pressure");
           names.emplace_back("nodal_dilatation_change");
-          interpretation.resize(dim + 2,
-                                DataComponentInterpretation::component_is_scalar);
+          interpretation
+            .resize(dim + 2, DataComponentInterpretation::component_is_scalar);
         }
       data_out.add_data_vector(u_full,
                                names,

@@ -74,8 +74,7 @@ main()
         again.variational_consistency == f.variational_consistency &&
         again.correction_function == f.correction_function &&
         again.vc_boundary == f.vc_boundary && again.fields == f.fields &&
-        again.bubble == f.bubble &&
-        !again.bond_correction_by_default;
+        again.bubble == f.bubble && !again.bond_correction_by_default;
       deallog << std::left << std::setw(20) << code << " -> " << std::setw(22)
               << f.text << " BC " << (f.bond_correction ? "on " : "off")
               << (f.notice().empty() ? "" : ", notice")

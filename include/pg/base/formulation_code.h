@@ -13,9 +13,9 @@ namespace pg
    * table's defaults: BC for every first-order formulation (Unl; U1 has no
    * bond to correct, U2 is second order), V3 for PPG, V5 for PBG, the
    * boundary option sn, TL. "noBC" switches the bond correction
-   * off. Parts that are not built yet (IUnlP0, UL) are rejected with a "not yet available"
-   * message, never ignored. The readings where the table is silent are in
-   * doc/ambiguities.md.
+   * off. Parts that are not built yet (IUnlP0, UL) are rejected with a "not yet
+   * available" message, never ignored. The readings where the table is silent
+   * are in doc/ambiguities.md.
    */
   struct FormulationCode
   {

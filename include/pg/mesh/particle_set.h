@@ -31,9 +31,9 @@ namespace pg
      * Collect the particles of the cells marked in @p meshfree (indexed by
      * active_cell_index) of @p dof_handler, whose finite element must be
      * FESystem(FE_Q(1), dim), or on the meshfree cells FESystem(FE_Q(1)^dim,
-     * FE_Q(1)^n) with n extra nodal fields (dofs/field_layout.h). Computes the lumped volumes
-     * V^k = sum over meshfree cells of the integral of N_k, the local
-     * spacing, and the geometric area vectors of the boundary parts.
+     * FE_Q(1)^n) with n extra nodal fields (dofs/field_layout.h). Computes the
+     * lumped volumes V^k = sum over meshfree cells of the integral of N_k, the
+     * local spacing, and the geometric area vectors of the boundary parts.
      */
     void
     reinit(const DoFHandler<dim>   &dof_handler,
