@@ -66,6 +66,31 @@ namespace pg
             add(table, y, dofs);
           }
       }
+
+
+      /**
+       * The undeformed family @p f of @p view: y^b = X^b - X^k of its
+       * members and their displacement DoFs, node-major.
+       */
+      template <int dim>
+      void
+      undeformed_family(const Postprocess::ProblemView<dim>  &view,
+                        const unsigned int                    f,
+                        std::vector<Tensor<1, dim>>          &y,
+                        std::vector<types::global_dof_index> &dofs)
+      {
+        const ParticleSet<dim> &particles = *view.particles;
+        const unsigned int      k         = (*view.owned_families)[f];
+        const auto              members   = view.families->members(k);
+        dofs.resize(members.size() * dim);
+        y.resize(members.size());
+        for (unsigned int b = 0; b < members.size(); ++b)
+          {
+            y[b] = particles.position(members[b]) - particles.position(k);
+            for (unsigned int c = 0; c < dim; ++c)
+              dofs[b * dim + c] = particles.dof(members[b], c);
+          }
+      }
     } // namespace
 
 
@@ -115,19 +140,9 @@ namespace pg
         });
       std::vector<Tensor<1, dim>>          y;
       std::vector<types::global_dof_index> dofs;
-      const ParticleSet<dim>              &particles = *view.particles;
       for (unsigned int f = 0; f < view.owned_families->size(); ++f)
         {
-          const unsigned int k       = (*view.owned_families)[f];
-          const auto         members = view.families->members(k);
-          dofs.resize(members.size() * dim);
-          y.resize(members.size());
-          for (unsigned int b = 0; b < members.size(); ++b)
-            {
-              y[b] = particles.position(members[b]) - particles.position(k);
-              for (unsigned int c = 0; c < dim; ++c)
-                dofs[b * dim + c] = particles.dof(members[b], c);
-            }
+          undeformed_family(view, f, y, dofs);
           add((*view.family_tables)[f], y, dofs, family_degree);
         }
       T.compress(VectorOperation::add);
@@ -198,7 +213,8 @@ namespace pg
           assemble_element(table, y, s_material, residual, &local);
           scatter(S);
         });
-      std::vector<Tensor<1, dim>> y;
+      std::vector<Tensor<1, dim>>          y;
+      std::vector<types::global_dof_index> dofs;
 
       // The families: S on the table (with the bubble node), B and M
       for (unsigned int f = 0; f < n_families; ++f)
@@ -210,17 +226,16 @@ namespace pg
           const QuadratureTable<dim>  kernel_table =
             bubble ? with_bubble_node(family) : family;
           const unsigned int n_nodes = kernel_table.n_nodes;
-          y.assign(n_nodes, Tensor<1, dim>());
+          undeformed_family(view, f, y, dofs);
           index.resize(n_nodes * dim);
-          for (unsigned int b = 0; b < m; ++b)
-            {
-              y[b] = particles.position(members[b]) - particles.position(k);
-              for (unsigned int c = 0; c < dim; ++c)
-                index[b * dim + c] = dense[particles.dof(members[b], c)];
-            }
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            index[i] = dense[dofs[i]];
           if (bubble)
-            for (unsigned int c = 0; c < dim; ++c)
-              index[m * dim + c] = n_u + f * dim + c;
+            {
+              y.emplace_back(); // u_b = 0
+              for (unsigned int c = 0; c < dim; ++c)
+                index[m * dim + c] = n_u + f * dim + c;
+            }
           assemble_element(kernel_table, y, s_material, residual, &local);
           scatter(S);
 

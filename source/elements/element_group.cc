@@ -34,6 +34,9 @@ namespace pg
     std::vector<double>                  du_local;
     for (unsigned int e = 0; e < condensed_iterates.size(); ++e)
       {
+        // (U2P1C keeps iterates without fields to recover)
+        if (!condensed_iterates[e].linearised())
+          continue;
         get_dof_indices(e, dofs);
         du_local.resize(dofs.size());
         for (unsigned int i = 0; i < dofs.size(); ++i)

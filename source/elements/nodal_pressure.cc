@@ -2,6 +2,7 @@
 #include <pg/elements/nodal_pressure.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/symmetric_tensor.h>
 
 #include <Eigen/Dense>
 
@@ -59,6 +60,16 @@ namespace pg
         }
     }
   } // namespace
+
+
+
+  template <int dim>
+  double
+  rest_volume_measure(const Materials::VolumetricSplit<dim> &material)
+  {
+    return material.volume_measure(
+      Tensor<2, dim>(unit_symmetric_tensor<dim>()));
+  }
 
 
 
@@ -125,12 +136,9 @@ namespace pg
     AssertDimension(y.size(), n);
     AssertDimension(p.size(), n);
     AssertDimension(vartheta.size(), n);
-    const std::vector<double> pi = nodal_field_interpolation(table);
-    Tensor<2, dim>            identity;
-    for (unsigned int i = 0; i < dim; ++i)
-      identity[i][i] = 1.;
-    const double        theta_0 = split.volume_measure(identity);
-    std::vector<double> p_q(n_q, 0.), Theta_q(n_q, theta_0);
+    const std::vector<double> pi      = nodal_field_interpolation(table);
+    const double              theta_0 = rest_volume_measure(split);
+    std::vector<double>       p_q(n_q, 0.), Theta_q(n_q, theta_0);
     for (unsigned int q = 0; q < n_q; ++q)
       for (unsigned int a = 0; a < n; ++a)
         {
@@ -362,6 +370,10 @@ namespace pg
   with_bubble_node(const QuadratureTable<2> &);
   template QuadratureTable<3>
   with_bubble_node(const QuadratureTable<3> &);
+  template double
+  rest_volume_measure(const Materials::VolumetricSplit<2> &);
+  template double
+  rest_volume_measure(const Materials::VolumetricSplit<3> &);
   template std::vector<double>
   nodal_field_interpolation(const QuadratureTable<2> &);
   template std::vector<double>

@@ -56,13 +56,24 @@ namespace pg
     const unsigned int                    e,
     std::vector<types::global_dof_index> &dofs) const
   {
+    FamilyGroupBase<dim>::get_dof_indices(e, dofs);
+    append_field_dofs(e, dofs);
+  }
+
+
+
+  template <int dim>
+  void
+  NodalPressureFamilyGroup<dim>::append_field_dofs(
+    const unsigned int                    e,
+    std::vector<types::global_dof_index> &dofs) const
+  {
     const auto members   = this->families.members(this->owned_families[e]);
     const unsigned int n = members.size();
+    AssertDimension(dofs.size(), n * dim);
     dofs.resize(n * (dim + 2));
     for (unsigned int b = 0; b < n; ++b)
       {
-        for (unsigned int c = 0; c < dim; ++c)
-          dofs[b * dim + c] = this->particles.dof(members[b], c);
         dofs[n * dim + b]     = this->particles.dof(members[b], dim);
         dofs[n * dim + n + b] = this->particles.dof(members[b], dim + 1);
       }
@@ -97,20 +108,14 @@ namespace pg
                                           LocalSystem  &local) const
   {
     auto &scratch = static_cast<NodalPressureScratch<dim> &>(scratch_base);
-    const unsigned int                k       = this->owned_families[e];
-    const auto                        members = this->families.members(k);
-    const unsigned int                n       = members.size();
+    this->gather(e, u, local.dofs, scratch.y);
+    append_field_dofs(e, local.dofs);
+    const unsigned int                n = scratch.y.size();
     const LinearAlgebra::GlobalReader u_at(u);
-    get_dof_indices(e, local.dofs);
-    scratch.y.resize(n);
     scratch.p.resize(n);
     scratch.vartheta.resize(n);
     for (unsigned int b = 0; b < n; ++b)
       {
-        for (unsigned int c = 0; c < dim; ++c)
-          scratch.y[b][c] = this->particles.position(members[b])[c] -
-                            this->particles.position(k)[c] +
-                            u_at[local.dofs[b * dim + c]];
         scratch.p[b]        = u_at[local.dofs[n * dim + b]];
         scratch.vartheta[b] = u_at[local.dofs[n * dim + n + b]];
       }

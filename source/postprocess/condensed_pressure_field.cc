@@ -1,5 +1,6 @@
 #include <pg/elements/condensed_pressure.h>
 #include <pg/elements/family_elements.h>
+#include <pg/elements/nodal_pressure.h>
 #include <pg/elements/q1_cell.h>
 #include <pg/families/family_set.h>
 #include <pg/mesh/particle_set.h>
@@ -38,6 +39,8 @@ namespace pg
         highest = std::max(highest, p);
       };
 
+      // (the nodal dilatation unknown is Theta - theta(I))
+      const double theta_0 = rest_volume_measure(*split);
       // The families: on their own table (PBG) or the master's (PPG).
       const bool ppg = (formulation.method != FormulationCode::Method::pbg);
       std::vector<Tensor<1, dim>> y;
@@ -54,14 +57,10 @@ namespace pg
                         u_all[particles.dof(members[b], c)];
           if (formulation.n_nodal_fields() > 0)
             {
-              // U2P1C, Unl+P1C: the nodal values (unknowns vartheta =
-              // Theta - theta(I))
-              Tensor<2, dim> identity;
-              for (unsigned int i = 0; i < dim; ++i)
-                identity[i][i] = 1.;
-              field.particle_pressure[k]   = u_all[particles.dof(k, dim)];
-              field.particle_dilatation[k] = split->volume_measure(identity) +
-                                             u_all[particles.dof(k, dim + 1)];
+              // U2P1C, Unl+P1C: the nodal values
+              field.particle_pressure[k] = u_all[particles.dof(k, dim)];
+              field.particle_dilatation[k] =
+                theta_0 + u_all[particles.dof(k, dim + 1)];
               note(field.particle_pressure[k]);
               continue;
             }

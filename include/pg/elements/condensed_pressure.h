@@ -69,6 +69,17 @@ namespace pg
      * by row); empty for the other elements.
      */
     std::vector<double> bubble, bubble_a, bubble_S;
+
+    /**
+     * Whether an assembly with a tangent stored a linearisation since the
+     * last update, i.e. whether update_condensed_fields() has anything to
+     * do.
+     */
+    bool
+    linearised() const
+    {
+      return !S.empty() || !bubble_S.empty();
+    }
   };
 
   /**

@@ -33,6 +33,15 @@ namespace pg
   nodal_field_interpolation(const QuadratureTable<dim> &table);
 
   /**
+   * theta(I), the volume measure of the undeformed state: 1 for J, 0 for
+   * tr eps. The nodal dilatation unknown is vartheta = Theta - theta(I), so
+   * that the zero vector is the undeformed state.
+   */
+  template <int dim>
+  double
+  rest_volume_measure(const Materials::VolumetricSplit<dim> &material);
+
+  /**
    * @p table with the bubble of Unl+P1C as one more node, n_nodes (eqs.
    * 6.13, 6.15, 6.16): its trial vectors are X_q - X_c, X_c the weighted
    * centroid of the points, so that sum_q w_q (X_q - X_c) = 0 (eq. 6.14).

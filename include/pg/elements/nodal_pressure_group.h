@@ -47,6 +47,14 @@ namespace pg
              LocalSystem                 &local) const override;
 
   private:
+    /**
+     * Append p and vartheta of the members to the u DoFs @p dofs of family
+     * @p e (FamilyGroupBase's, node-major).
+     */
+    void
+    append_field_dofs(const unsigned int                    e,
+                      std::vector<types::global_dof_index> &dofs) const;
+
     const std::vector<QuadratureTable<dim>> &family_tables;
     const Materials::VolumetricSplit<dim>   &material;
     const bool                               bubble;
