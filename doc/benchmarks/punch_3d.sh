@@ -1,0 +1,129 @@
+#!/bin/sh
+# Benchmark B-11 (dissertation section 7.3.3, Figs. 7.19-7.20): the 3-D
+# punch of prm/punch_3d.prm (quarter block 0.1 x 0.1 x 0.05 m, dead load
+# q = 9 N/m^2 on the top patch 0 <= x, y <= 0.05 held horizontally,
+# symmetry at x = 0 and y = 0, wall at z = 0, isochoric-volumetric
+# neo-Hooke E = 4.8293 N/m^2) on n x n x n/2 cells / (n+1)^2 (n/2+1)
+# particles, for nu = 0.4 and nu = 0.49999. Recorded per run: u_z at the
+# patch centre (the minimal u_z) at the last completed load step, the
+# load factor reached, Newton iterations, wall time and exit code.
+# The reference ('overkill') is FEM H1P0 on the finest mesh of REF_N.
+# RUNS="<nu>|<formulation>|<linear solver>|<n list>;..." replaces the
+# default set below. Each run is skipped when its line is already in
+# results.txt (delete the file to redo everything).
+# PLOT_ONLY=1: only redraw the figure. PYTHON=<python with matplotlib>.
+# Writes doc/benchmarks/punch_3d/results.txt and doc/figures/punch_3d.png.
+# Usage (from the repository root, with a Release build; about 40 minutes
+# on 2 cores):
+#   sh doc/benchmarks/punch_3d.sh build-release/applications/pg_solve/pg_solve
+set -e
+PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
+OUT=${OUT:-doc/benchmarks/punch_3d}
+FIG=${FIG:-doc/figures/punch_3d.png}
+PYTHON=${PYTHON:-/usr/bin/python3}
+ROOT=$(pwd)
+WORK=$(mktemp -d)
+mkdir -p "$OUT" "$(dirname "$FIG")"
+RESULTS="$OUT/results.txt"
+
+# nu = 0.4: the legend of Fig. 7.20 (left); nu = 0.49999: the formulations
+# of the text. PPG tangents are not symmetric: GMRES. Near incompressibility ML's CG does not converge in
+# reasonable time, so those runs use the direct solver.
+[ -n "$RUNS" ] || RUNS="0.4|FEM|cg|4 8 12 16 24 32;\
+0.4|FEM H1P0|cg|4 8 12 16 24 32 40;\
+0.4|PPG Unl|gmres|4 8 12;\
+0.4|PBG Unl|cg|4 8 12;\
+0.4|VCPBG Unl|cg|4 8 12 16;\
+0.4|VCPBG U1SIG|cg|4 8 12;\
+0.49999|FEM|direct|4 8 12 16;\
+0.49999|FEM H1P0|direct|4 8 12 16 24;\
+0.49999|VCPBG Unl|direct|4 8 12;\
+0.49999|VCPBG UnlP0|direct|4 8 12;\
+0.49999|PBG Unl+P1C|direct|4 8 12"
+
+[ -f "$RESULTS" ] || [ -n "$PLOT_ONLY" ] ||
+  echo "# nu | formulation | n | nodes (= particles) | DoFs | u_z at the patch centre | load factor reached | Newton iterations | wall (s) | exit code | stop message (shortened)" > "$RESULTS"
+
+if [ -z "$PLOT_ONLY" ]; then
+echo "$RUNS" | tr ';' '\n' | while IFS='|' read -r nu f solver ns; do
+  for n in $ns; do
+    if grep -q "^$nu | $f | $n |" "$RESULTS"; then continue; fi
+    cat > "$WORK/run.prm" <<END
+include $ROOT/prm/punch_3d.prm
+subsection Geometry
+  set Subdivisions = $n, $n, $((n / 2))
+end
+subsection Discretization
+  set Formulation = $f
+end
+subsection Material
+  set Poisson's ratio = $nu
+end
+subsection Linear solver
+  set Type = $solver
+end
+subsection Output
+  set Directory = $WORK/out
+  set VTU       = false
+end
+END
+    rm -rf "$WORK/out"
+    rc=0
+    "$PG_SOLVE" "$WORK/run.prm" > "$WORK/run.log" 2>&1 || rc=$?
+    "$PYTHON" - "$WORK/out" "$nu" "$f" "$n" "$rc" >> "$RESULTS" <<'END'
+import json, re, sys
+out, nu, name, n, rc = sys.argv[1:6]
+try:
+    s = json.load(open(out + "/summary.json"))
+except OSError:
+    print("%s | %s | %s | - | - | - | 0 | - | - | %s | no summary.json" % (nu, name, n, rc))
+    sys.exit(0)
+msg = s.get("message", "")
+hit = re.search(r"last load factor reached: ([0-9.eE+-]+)", msg)
+t = float(hit.group(1)) if hit else (1.0 if s.get("converged") else float("nan"))
+rows = [l.split() for l in open(out + "/statistics.txt") if not l.startswith("#")]
+# summary.json's points hold the last completed load step in full
+# precision; statistics.txt (step, load factor, Newton iterations,
+# residual, u of 'punch centre', wall time) only 3 digits
+point = s.get("points", {}).get("punch centre")
+uz = "%.6g" % point[2] if point else (rows[-1][6] if rows else "-")
+short = msg.split(". ")[0] if msg else "finished"
+print("%s | %s | %s | %d | %d | %s | %.4f | %d | %.1f | %s | %s" % (
+    nu, name, n, (int(n) + 1) ** 2 * (int(n) // 2 + 1), s["n_dofs"], uz, t, s["newton_iterations"],
+    s["timing"]["total"], rc, short))
+END
+    tail -n 1 "$RESULTS"
+  done
+done
+fi
+rm -rf "$WORK"
+
+"$PYTHON" - "$RESULTS" "$FIG" <<'END'
+import sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+results, fig_path = sys.argv[1:3]
+rows = [l.rstrip("\n").split(" | ") for l in open(results) if not l.startswith("#")]
+fig, axs = plt.subplots(1, 2, figsize=(12, 4.8))
+for ax, nu in zip(axs, ("0.4", "0.49999")):
+    series = {}
+    for r in rows:
+        if r[0] == nu and r[5] != "-" and float(r[6]) == 1.0:
+            series.setdefault(r[1], []).append((int(r[3]), float(r[5])))
+    ref = sorted(series.get("FEM H1P0", []))
+    if ref:
+        ax.axhline(ref[-1][1], color="k", lw=0.8,
+                   label="FEM H1P0, %d nodes (reference)" % ref[-1][0])
+    for name, pts in series.items():
+        pts.sort()
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=name)
+    ax.set_xscale("log")
+    ax.set_xlabel("particles / nodes")
+    ax.set_ylabel("minimal $u_z$ (m), at the patch centre")
+    ax.set_title(r"3-D punch, $\nu$ = %s (completed runs)" % nu)
+    ax.legend(fontsize=8)
+fig.tight_layout()
+fig.savefig(fig_path, dpi=120)
+print("wrote", fig_path)
+END
