@@ -126,4 +126,23 @@ for ax, nu in zip(axs, ("0.4", "0.49999")):
 fig.tight_layout()
 fig.savefig(fig_path, dpi=120)
 print("wrote", fig_path)
+
+# the tables of doc/benchmarks/punch_3d.md: deviation from the finest
+# completed FEM H1P0 run of the same nu
+for nu in ("0.4", "0.49999"):
+    ref = sorted((int(r[2]), float(r[5])) for r in rows
+                 if r[0] == nu and r[1] == "FEM H1P0" and float(r[6]) == 1.0)
+    if not ref:
+        continue
+    n_ref, u_ref = ref[-1]
+    print("\nnu = %s, reference FEM H1P0 n = %d: u_z = %.6g" % (nu, n_ref, u_ref))
+    print("| formulation | n | nodes | DoFs | u_z (m) | deviation | load factor reached | Newton its | wall (s) |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        if r[0] != nu or r[5] == "-":
+            continue
+        done = float(r[6]) == 1.0
+        dev = "%+.1f %%" % (100 * (float(r[5]) / u_ref - 1)) if done else "failed"
+        print("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            r[1], r[2], r[3], r[4], r[5], dev, r[6], r[7], r[8]))
 END

@@ -52,7 +52,15 @@ namespace pg
   ElementGroup<dim>::reset_local_fields()
   {
     for (auto &iterate : condensed_iterates)
-      iterate = CondensedFieldIterate();
+      {
+        // Unl+P1C's bubble stays as the start of its local Newton
+        // iteration: from u_b = 0 the family can be inverted where the
+        // converged bubble was holding it (3-D punch, doc/benchmarks/
+        // punch_3d.md)
+        std::vector<double> bubble = std::move(iterate.bubble);
+        iterate                    = CondensedFieldIterate();
+        iterate.bubble             = std::move(bubble);
+      }
   }
 
 

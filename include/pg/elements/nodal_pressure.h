@@ -71,7 +71,8 @@ namespace pg
    * u_b is condensed: r = r_g - K_gb K_bb^-1 r_b, K = K_gg - K_gb K_bb^-1
    * K_bg. u_b is @p iterate's (a Newton iterate, recovered after each global
    * solve by update_condensed_fields()); with no @p iterate or one
-   * at_equilibrium it is solved from r_b = 0 first (local Newton), and
+   * at_equilibrium it is solved from r_b = 0 first (local Newton, started
+   * from the iterate's last bubble if it has one, else from 0), and
    * stored in the iterate. An assembly with a tangent stores the
    * linearisation of u_b in the iterate. Without a bubble the iterate is
    * not used.
