@@ -179,31 +179,7 @@ namespace pg
             Eigen::Matrix<double, dim, 1>   r_b, r_trial;
             Eigen::Matrix<double, dim, dim> K_bb, K_trial;
             double                          scale;
-            // from the last bubble where there is one (kept through
-            // reset_local_fields()), else, or if that inverts the family
-            // at the new displacement, from u_b = 0
-            bool started = false;
-            if (iterate != nullptr && iterate->bubble.size() == dim)
-              try
-                {
-                  for (unsigned int i = 0; i < dim; ++i)
-                    u_b[i] = iterate->bubble[i];
-                  bubble_equation(table,
-                                  F0,
-                                  beta,
-                                  p_q,
-                                  material,
-                                  u_b,
-                                  r_b,
-                                  K_bb,
-                                  scale);
-                  started = true;
-                }
-              catch (const ExceptionBase &)
-                {
-                  u_b = Tensor<1, dim>();
-                }
-            if (!started)
+            const auto                      evaluate_at_u_b = [&]() {
               bubble_equation(table,
                               F0,
                               beta,
@@ -213,6 +189,25 @@ namespace pg
                               r_b,
                               K_bb,
                               scale);
+            };
+            // from the last bubble where there is one (kept through
+            // reset_local_fields()), else, or if that inverts the family
+            // at the new displacement, from u_b = 0
+            bool started = false;
+            if (iterate != nullptr && iterate->bubble.size() == dim)
+              try
+                {
+                  for (unsigned int i = 0; i < dim; ++i)
+                    u_b[i] = iterate->bubble[i];
+                  evaluate_at_u_b();
+                  started = true;
+                }
+              catch (const ExceptionBase &)
+                {
+                  u_b = Tensor<1, dim>();
+                }
+            if (!started)
+              evaluate_at_u_b();
             for (unsigned int it = 0; it < 25 && r_b.norm() > 1e-14 * scale;
                  ++it)
               {
