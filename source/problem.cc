@@ -190,7 +190,12 @@ namespace pg
     , root(Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , pcout(out, root)
     , formulation(parse_formulation_code(parameters.discretization.formulation))
-    , material(Materials::create_material<dim>(parameters.material))
+    // IUnlP0 constrains the volume by its pressure: the material's
+    // isochoric part alone (its K is infinite)
+    , material(Materials::create_material<dim>(
+        formulation.incompressible() ?
+          parameters.material.without_volumetric_energy() :
+          parameters.material))
     , discretization(mpi_communicator, parameters.geometry)
     , system(parameters,
              mpi_communicator,

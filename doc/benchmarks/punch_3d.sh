@@ -4,7 +4,8 @@
 # q = 9 N/m^2 on the top patch 0 <= x, y <= 0.05 held horizontally,
 # symmetry at x = 0 and y = 0, wall at z = 0, isochoric-volumetric
 # neo-Hooke E = 4.8293 N/m^2) on n x n x n/2 cells / (n+1)^2 (n/2+1)
-# particles, for nu = 0.4 and nu = 0.49999. Recorded per run: u_z at the
+# particles, for nu = 0.4 and nu = 0.49999, and for the incompressible
+# IUnlP0 at nu = 0.5 (shown beside nu = 0.49999). Recorded per run: u_z at the
 # patch centre (the minimal u_z) at the last completed load step, the
 # load factor reached, Newton iterations, wall time and exit code.
 # The reference ('overkill') is FEM H1P0 on the finest mesh of REF_N.
@@ -39,7 +40,9 @@ RESULTS="$OUT/results.txt"
 0.49999|FEM H1P0|direct|4 8 12 16 24;\
 0.49999|VCPBG Unl|direct|4 8 12;\
 0.49999|VCPBG UnlP0|direct|4 8 12;\
-0.49999|PBG Unl+P1C|direct|4 8 12"
+0.49999|PBG Unl+P1C|direct|4 8 12;\
+0.5|VCPPG IUnlP0|direct|4 8 12;\
+0.5|VCPBG IUnlP0|direct|4 8 12"
 
 [ -f "$RESULTS" ] || [ -n "$PLOT_ONLY" ] ||
   echo "# nu | formulation | n | nodes (= particles) | DoFs | u_z at the patch centre | load factor reached | Newton iterations | wall (s) | exit code | stop message (shortened)" > "$RESULTS"
@@ -109,8 +112,11 @@ fig, axs = plt.subplots(1, 2, figsize=(12, 4.8))
 for ax, nu in zip(axs, ("0.4", "0.49999")):
     series = {}
     for r in rows:
-        if r[0] == nu and r[5] != "-" and float(r[6]) == 1.0:
-            series.setdefault(r[1], []).append((int(r[3]), float(r[5])))
+        # (the incompressible IUnlP0 at nu = 0.5 beside nu = 0.49999)
+        same = r[0] == nu or (nu == "0.49999" and r[0] == "0.5")
+        if same and r[5] != "-" and float(r[6]) == 1.0:
+            name = r[1] + (" (nu = 0.5)" if r[0] == "0.5" else "")
+            series.setdefault(name, []).append((int(r[3]), float(r[5])))
     ref = sorted(series.get("FEM H1P0", []))
     if ref:
         ax.axhline(ref[-1][1], color="k", lw=0.8,
@@ -139,10 +145,10 @@ for nu in ("0.4", "0.49999"):
     print("| formulation | n | nodes | DoFs | u_z (m) | deviation | load factor reached | Newton its | wall (s) |")
     print("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
-        if r[0] != nu or r[5] == "-":
+        if r[5] == "-" or not (r[0] == nu or (nu == "0.49999" and r[0] == "0.5")):
             continue
         done = float(r[6]) == 1.0
         dev = "%+.1f %%" % (100 * (float(r[5]) / u_ref - 1)) if done else "failed"
         print("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-            r[1], r[2], r[3], r[4], r[5], dev, r[6], r[7], r[8]))
+            r[1] + (" (nu = 0.5)" if r[0] == "0.5" else ""), r[2], r[3], r[4], r[5], dev, r[6], r[7], r[8]))
 END

@@ -13,8 +13,8 @@ namespace pg
       "the VC correction function V1 ... V5 (default V3 for PPG, V5 for "
       "PBG, V1 for VC2) and its boundary option <b> = p, s or sn (default "
       "sn; VC2 takes s), and <points> = Unl (default), U1 (PBG only), U2, "
-      "UnlP0 (mixed, PBG or PPG), U2P1, U2P1C or Unl+P1C (mixed, PBG "
-      "only), U1SUnl or U1SIG "
+      "UnlP0 (mixed, PBG or PPG), IUnlP0 (incompressible, nu = 0.5, PBG or "
+      "PPG), U2P1, U2P1C or Unl+P1C (mixed, PBG only), U1SUnl or U1SIG "
       "(stabilised U1, PBG only). "
       "The bond correction BC is the default of Unl; 'noBC' switches it "
       "off. E.g. 'VCPPG V3sn Unl' (= 'VCBCPPG V3sn Unl TL'), 'VCPBG Unl' "
@@ -81,11 +81,12 @@ namespace pg
                                               "sn");
         }
       using Points = FormulationCode::Points;
-      text += (p0 ? " UnlP0" :
+      text += (p0                    ? " UnlP0" :
+               code.incompressible() ? " IUnlP0" :
                code.fields == FormulationCode::Fields::condensed_p1 ?
-                    " U2P1" :
+                                       " U2P1" :
                code.fields == FormulationCode::Fields::nodal_p1 ?
-                    (code.bubble ? " Unl+P1C" : " U2P1C") :
+                                       (code.bubble ? " Unl+P1C" : " U2P1C") :
                code.points == Points::unl                           ? " Unl" :
                code.points == Points::u1 && code.implicit_gradients ? " U1SIG" :
                code.points == Points::u1                            ? " U1" :
@@ -260,7 +261,7 @@ namespace pg
         const std::string &w = words[i];
         if (w == "Unl" || w == "U1" || w == "U2" || w == "UnlP0" ||
             w == "U2P1" || w == "U1SUnl" || w == "U1SIG" || w == "U2P1C" ||
-            w == "Unl+P1C")
+            w == "Unl+P1C" || w == "IUnlP0")
           {
             if (have_points)
               reject(code, "it names two formulations.");
@@ -273,6 +274,8 @@ namespace pg
                                FormulationCode::Points::unl);
             if (w == "UnlP0")
               result.fields = FormulationCode::Fields::condensed_p0;
+            if (w == "IUnlP0")
+              result.fields = FormulationCode::Fields::incompressible_p0;
             if (w == "U2P1")
               result.fields = FormulationCode::Fields::condensed_p1;
             if (w == "U2P1C" || w == "Unl+P1C")
@@ -321,12 +324,6 @@ namespace pg
                      "the VC boundary option <" + option +
                        "> is unknown; use p, s or sn.");
           }
-        else if (w == "IUnlP0")
-          reject(code,
-                 "the incompressible formulation IUnlP0 (nu = 0.5, a global "
-                 "pressure per family) is not yet available; for nearly "
-                 "incompressible materials use 'VCPBG V5sn Unl+P1C' or "
-                 "'VCBCPBG V5sn UnlP0' with Poisson's ratio below 0.5.");
         else
           reject(code, "the part <" + w + "> is unknown.");
       }
@@ -377,6 +374,12 @@ namespace pg
              "6.7): its volumetric point at the master has the test "
              "functions of PPG1, whose VC condition PPG2 does not satisfy. "
              "Write 'VCPPG V3sn UnlP0' or 'VCPBG V5sn UnlP0'.");
+    if (result.incompressible() &&
+        result.method == FormulationCode::Method::ppg2)
+      reject(code,
+             "IUnlP0 is the incompressible UnlP0 (section 6.2.1), defined "
+             "for PBG and PPG (= PPG1); write 'VCPPG V3sn IUnlP0' or "
+             "'VCPBG V5sn IUnlP0'.");
     if (result.fields == FormulationCode::Fields::condensed_p1 &&
         result.method != FormulationCode::Method::pbg)
       reject(code,

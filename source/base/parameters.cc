@@ -350,6 +350,31 @@ namespace pg
                     "the master's weight in U1SIG's MLS1 second derivatives "
                     "is that of a member at this distance; it must be "
                     "positive (default 0.001)."));
+      // nu = 0.5 is the incompressible IUnlP0's, and IUnlP0 needs it
+      AssertThrow(
+        !material.incompressible() || code.incompressible(),
+        ExcBadParameter(
+          "Material/Poisson's ratio",
+          "0.5",
+          "at 0.5 the material is incompressible, lambda is infinite, and "
+          "the formulation <" +
+            code.text +
+            "> (subsection 'Discretization') would lock or divide by zero. "
+            "Use the incompressible mixed formulation 'VCPBG V5sn IUnlP0' "
+            "(or 'VCPPG V3sn IUnlP0'), or a nearly incompressible nu such as "
+            "0.4999 with a mixed code ('VCPBG V5sn UnlP0', 'VCPBG V5sn "
+            "Unl+P1C', 'FEM Q1P0')."));
+      AssertThrow(
+        material.incompressible() || !code.incompressible(),
+        ExcBadParameter(
+          "Material/Poisson's ratio",
+          (std::ostringstream() << material.poissons_ratio).str(),
+          "the formulation <" + code.text +
+            "> (subsection 'Discretization') is exactly incompressible "
+            "(Theta = 1, Table 7.1): set 'Poisson's ratio = 0.5' with "
+            "'Young's modulus' = 3 mu (and no 'Bulk modulus' or 'Shear "
+            "modulus'), or use the compressible 'VCPBG V5sn UnlP0' for nu < "
+            "0.5."));
       if (code.mixed())
         {
           AssertThrow(material.model == "isochoric-volumetric neo-Hooke" ||
@@ -378,34 +403,44 @@ namespace pg
         }
       if (code.n_nodal_fields() > 0)
         {
-          // p and Theta are global unknowns: a saddle-point system
+          // p (and Theta) are global unknowns: a saddle-point system
           // (pg-methods.md section 15), and no mass for them
-          AssertThrow(
-            linear_solver.type == "direct",
-            ExcBadParameter("Linear solver/Type",
-                            linear_solver.type,
-                            "the formulation <" + code.text +
-                              "> has the pressure and the dilatation as nodal "
-                              "unknowns, so its tangent is an indefinite "
-                              "saddle-point matrix that CG and GMRES with "
-                              "algebraic multigrid do not solve. Set 'Type = "
-                              "direct'."));
+          AssertThrow(linear_solver.type == "direct",
+                      ExcBadParameter(
+                        "Linear solver/Type",
+                        linear_solver.type,
+                        "the formulation <" + code.text + "> has the pressure" +
+                          (code.incompressible() ?
+                             std::string(" of every family as a global") :
+                             std::string(" and the dilatation as nodal")) +
+                          " unknowns, so its tangent is an indefinite "
+                          "saddle-point matrix that CG and GMRES with "
+                          "algebraic multigrid do not solve. Set 'Type = "
+                          "direct'."));
           AssertThrow(
             analysis.type == "static" && !time.dynamic(),
             ExcBadParameter(
               analysis.type != "static" ? "Analysis/Type" : "Time/Integrator",
               analysis.type != "static" ? analysis.type : time.integrator,
               "the formulation <" + code.text +
-                "> (nodal pressure and dilatation) is available "
+                (code.incompressible() ?
+                   std::string("> (a global pressure per family)") :
+                   std::string("> (nodal pressure and dilatation)")) +
+                " is available "
                 "for quasi-static load stepping only so far. Use "
                 "'Type = static' without an integrator, or the "
                 "condensed mixed formulation 'VCPBG V5sn UnlP0'" +
-                (analysis.type == "inf-sup" ?
+                (analysis.type != "inf-sup" ?
+                   std::string() :
+                 code.incompressible() ?
+                   std::string("; the inf-sup test of IUnlP0 is that of "
+                               "UnlP0, on its displacement formulation: "
+                               "'Formulation = BCPBG Unl' with 'Pressure "
+                               "space = P0'") :
                    std::string("; the inf-sup test of Unl+P1C (U2P1C) runs "
                                "on its displacement formulation: "
                                "'Formulation = BCPBG Unl' ('PBG U2') with "
-                               "'Pressure space = P1C+bubble' ('P1C')") :
-                   std::string()) +
+                               "'Pressure space = P1C+bubble' ('P1C')")) +
                 "."));
         }
     }

@@ -5,6 +5,7 @@
 #include <pg/shape_functions/shape_functions.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/grid_tools.h>
 
@@ -63,6 +64,22 @@ namespace pg
           else if (loaded_by_face_traction(cell))
             owned_meshfree_neumann_cells.push_back(cell);
         }
+
+    // IUnlP0's pressure is a DoF of every family; a Q1 cell would need
+    // one of its own (incompressible Q1P0 is not built)
+    AssertThrow(
+      !formulation.incompressible() ||
+        !Utilities::MPI::logical_or(!owned_fe_cells.empty(),
+                                    triangulation.get_communicator()),
+      ExcBadParameter(
+        "Geometry/Meshfree region",
+        geometry.meshfree_region,
+        "the incompressible formulation <" + formulation.text +
+          "> (subsection 'Discretization') has a global pressure per "
+          "family and no finite element counterpart yet, so it cannot be "
+          "coupled to finite element cells. Set 'Meshfree region = all', or "
+          "couple a nearly incompressible material (nu = 0.4999) with "
+          "'VCPBG V5sn UnlP0' or 'VCPBG V5sn Unl+P1C' (FE cells Q1P0/H1P0)."));
 
     // Particles, families, and the quadrature table of every family owned
     // by this rank (owned = its master's DoFs are owned here).

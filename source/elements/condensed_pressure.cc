@@ -1,5 +1,6 @@
 #include <pg/elements/condensed_pressure.h>
 #include <pg/elements/isochoric_part_at_pressure.h>
+#include <pg/elements/nodal_pressure.h>
 
 #include <Eigen/Dense>
 
@@ -205,6 +206,52 @@ namespace pg
     {
       return std::vector<double>(v.data(), v.data() + v.size());
     }
+
+
+
+    /**
+     * The isochoric part at every point of @p table and the volumetric
+     * stress p d theta / dF (with its tangent p d^2 theta) of the constant
+     * pressure @p p at the volumetric points: those of @p table itself
+     * (@p volumetric_table nullptr; one kernel call) or of a separate table
+     * (a PPG family's master; two calls).
+     */
+    template <int dim>
+    void
+    assemble_isochoric_part_at_pressure(
+      const QuadratureTable<dim>            &table,
+      const QuadratureTable<dim>            *volumetric_table,
+      const std::vector<Tensor<1, dim>>     &y,
+      const Materials::VolumetricSplit<dim> &split,
+      const double                           p,
+      Vector<double>                        &residual,
+      FullMatrix<double>                    *tangent)
+    {
+      if (volumetric_table == nullptr)
+        {
+          assemble_element(table,
+                           y,
+                           IsochoricPartAtPressure<dim>(split, p, true),
+                           residual,
+                           tangent);
+          return;
+        }
+      assemble_element(table,
+                       y,
+                       IsochoricPartAtPressure<dim>(split, 0., true),
+                       residual,
+                       tangent);
+      Vector<double>     volumetric_residual;
+      FullMatrix<double> volumetric_tangent;
+      assemble_element(*volumetric_table,
+                       y,
+                       IsochoricPartAtPressure<dim>(split, p, false),
+                       volumetric_residual,
+                       tangent != nullptr ? &volumetric_tangent : nullptr);
+      residual += volumetric_residual;
+      if (tangent != nullptr)
+        tangent->add(1., volumetric_tangent);
+    }
   } // namespace
 
 
@@ -305,8 +352,7 @@ namespace pg
     const std::vector<double> Theta = basis.values(c_Theta);
     const std::vector<double> p     = basis.values(c_p);
 
-    // The isochoric part and p d^2 theta at every point; for separate
-    // volumetric points (PPG) two kernel calls.
+    // The isochoric part and p d^2 theta at every point.
     if (degree == 1)
       {
         std::vector<double> unchanged_pressures(p.size());
@@ -318,30 +364,14 @@ namespace pg
                          make_array_view(p),
                          make_array_view(unchanged_pressures));
       }
-    else if (volumetric_table == nullptr)
-      assemble_element(table,
-                       y,
-                       IsochoricPartAtPressure<dim>(split, p[0], true),
-                       residual,
-                       tangent);
     else
-      {
-        assemble_element(table,
-                         y,
-                         IsochoricPartAtPressure<dim>(split, 0., true),
-                         residual,
-                         tangent);
-        Vector<double>     volumetric_residual;
-        FullMatrix<double> volumetric_tangent;
-        assemble_element(*volumetric_table,
-                         y,
-                         IsochoricPartAtPressure<dim>(split, p[0], false),
-                         volumetric_residual,
-                         tangent != nullptr ? &volumetric_tangent : nullptr);
-        residual += volumetric_residual;
-        if (tangent != nullptr)
-          tangent->add(1., volumetric_tangent);
-      }
+      assemble_isochoric_part_at_pressure(table,
+                                          volumetric_table,
+                                          y,
+                                          split,
+                                          p[0],
+                                          residual,
+                                          tangent);
 
     // Three fields: the local residuals R_p, R_Theta of the iterate enter
     // the condensed residual through G_test^T M^{-1} (R_Theta + H M^{-1}
@@ -399,6 +429,66 @@ namespace pg
 
 
 
+  template <int dim>
+  double
+  assemble_incompressible_p0_element(
+    const QuadratureTable<dim>            &table,
+    const QuadratureTable<dim>            *volumetric_table,
+    const std::vector<Tensor<1, dim>>     &y,
+    const Materials::VolumetricSplit<dim> &split,
+    const double                           pressure,
+    Vector<double>                        &residual,
+    FullMatrix<double>                    *tangent)
+  {
+    const QuadratureTable<dim> &vol_table =
+      (volumetric_table != nullptr ? *volumetric_table : table);
+    const unsigned int n_u = table.n_nodes * dim;
+    Vector<double>     r_u;
+    FullMatrix<double> k_uu;
+    assemble_isochoric_part_at_pressure(table,
+                                        volumetric_table,
+                                        y,
+                                        split,
+                                        pressure,
+                                        r_u,
+                                        tangent != nullptr ? &k_uu : nullptr);
+    AssertDimension(r_u.size(), n_u);
+
+    const FieldBasis<dim>     basis(vol_table, 0);
+    const std::vector<double> theta      = volume_measures(vol_table, y, split);
+    const double              theta_0    = rest_volume_measure(split);
+    double                    constraint = 0, volume = 0;
+    for (unsigned int q = 0; q < vol_table.n_points(); ++q)
+      {
+        constraint += vol_table.weights[q] * (theta[q] - theta_0);
+        volume += vol_table.weights[q];
+      }
+    residual.reinit(n_u + 1);
+    for (unsigned int i = 0; i < n_u; ++i)
+      residual[i] = r_u[i];
+    residual[n_u] = constraint;
+    if (tangent != nullptr)
+      {
+        const Eigen::MatrixXd g_test =
+          moment_derivative(vol_table, basis, y, split, true);
+        const Eigen::MatrixXd g_trial =
+          vol_table.test_is_trial ?
+            g_test :
+            moment_derivative(vol_table, basis, y, split, false);
+        tangent->reinit(n_u + 1, n_u + 1);
+        for (unsigned int i = 0; i < n_u; ++i)
+          {
+            for (unsigned int j = 0; j < n_u; ++j)
+              (*tangent)(i, j) = k_uu(i, j);
+            (*tangent)(i, n_u) = g_test(0, i);
+            (*tangent)(n_u, i) = g_trial(0, i);
+          }
+      }
+    return theta_0 + constraint / volume;
+  }
+
+
+
   template CondensedPressure
   condensed_pressure(const QuadratureTable<2> &,
                      const std::vector<Tensor<1, 2>> &,
@@ -427,4 +517,20 @@ namespace pg
                                       FullMatrix<double> *,
                                       const unsigned int,
                                       CondensedFieldIterate *);
+  template double
+  assemble_incompressible_p0_element(const QuadratureTable<2> &,
+                                     const QuadratureTable<2> *,
+                                     const std::vector<Tensor<1, 2>> &,
+                                     const Materials::VolumetricSplit<2> &,
+                                     const double,
+                                     Vector<double> &,
+                                     FullMatrix<double> *);
+  template double
+  assemble_incompressible_p0_element(const QuadratureTable<3> &,
+                                     const QuadratureTable<3> *,
+                                     const std::vector<Tensor<1, 3>> &,
+                                     const Materials::VolumetricSplit<3> &,
+                                     const double,
+                                     Vector<double> &,
+                                     FullMatrix<double> *);
 } // namespace pg

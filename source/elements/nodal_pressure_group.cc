@@ -1,4 +1,5 @@
 #include <pg/base/global_reader.h>
+#include <pg/elements/condensed_pressure.h>
 #include <pg/elements/nodal_pressure.h>
 #include <pg/elements/nodal_pressure_group.h>
 
@@ -18,6 +19,8 @@ namespace pg
 
       std::vector<Tensor<1, dim>> y;
       std::vector<double>         p, vartheta;
+      /** IUnlP0 with PPG: the volumetric point, the master. */
+      QuadratureTable<dim> master_table;
     };
   } // namespace
 
@@ -133,6 +136,93 @@ namespace pg
 
 
 
+  template <int dim>
+  IncompressibleFamilyGroup<dim>::IncompressibleFamilyGroup(
+    const std::vector<unsigned int>         &owned_families,
+    const FamilySet<dim>                    &families,
+    const ParticleSet<dim>                  &particles,
+    const std::vector<QuadratureTable<dim>> &family_tables,
+    const Materials::VolumetricSplit<dim>   &material,
+    const FamilyElements<dim>               *family_elements)
+    : FamilyGroupBase<dim>(owned_families, families, particles)
+    , family_tables(family_tables)
+    , material(material)
+    , family_elements(family_elements)
+  {
+    AssertThrow(particles.n_components() == dim + 1, ExcInternalError());
+  }
+
+
+
+  template <int dim>
+  std::string
+  IncompressibleFamilyGroup<dim>::name() const
+  {
+    return "IUnlP0 families";
+  }
+
+
+
+  template <int dim>
+  void
+  IncompressibleFamilyGroup<dim>::get_dof_indices(
+    const unsigned int                    e,
+    std::vector<types::global_dof_index> &dofs) const
+  {
+    FamilyGroupBase<dim>::get_dof_indices(e, dofs);
+    dofs.push_back(this->particles.dof(this->owned_families[e], dim));
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  IncompressibleFamilyGroup<dim>::n_evaluation_points(
+    const unsigned int e) const
+  {
+    return family_tables[e].n_points();
+  }
+
+
+
+  template <int dim>
+  std::unique_ptr<GroupScratch>
+  IncompressibleFamilyGroup<dim>::create_scratch() const
+  {
+    return std::make_unique<NodalPressureScratch<dim>>();
+  }
+
+
+
+  template <int dim>
+  void
+  IncompressibleFamilyGroup<dim>::assemble(const unsigned int           e,
+                                           const LinearAlgebra::Vector &u,
+                                           const ElementHistory &,
+                                           GroupScratch &scratch_base,
+                                           LocalSystem  &local) const
+  {
+    auto &scratch = static_cast<NodalPressureScratch<dim> &>(scratch_base);
+    const unsigned int k = this->owned_families[e];
+    this->gather(e, u, local.dofs, scratch.y);
+    local.dofs.push_back(this->particles.dof(k, dim));
+    const double pressure = LinearAlgebra::GlobalReader(u)[local.dofs.back()];
+    if (family_elements != nullptr)
+      family_elements->build_master_table(k, scratch.master_table);
+    assemble_incompressible_p0_element(
+      family_tables[e],
+      family_elements != nullptr ? &scratch.master_table : nullptr,
+      scratch.y,
+      material,
+      pressure,
+      local.residual,
+      local.with_matrix ? &local.matrix : nullptr);
+  }
+
+
+
   template class NodalPressureFamilyGroup<2>;
   template class NodalPressureFamilyGroup<3>;
+  template class IncompressibleFamilyGroup<2>;
+  template class IncompressibleFamilyGroup<3>;
 } // namespace pg

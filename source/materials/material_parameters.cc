@@ -72,6 +72,25 @@ namespace pg
 
 
 
+    bool
+    Material::incompressible() const
+    {
+      return !bulk_modulus && poissons_ratio == 0.5;
+    }
+
+
+
+    Material
+    Material::without_volumetric_energy() const
+    {
+      Material result      = *this;
+      result.shear_modulus = mu();
+      result.bulk_modulus  = 0.;
+      return result;
+    }
+
+
+
     Material
     Material::with_poissons_ratio(const double nu) const
     {
@@ -132,7 +151,8 @@ namespace pg
         prm.declare_entry("Poisson's ratio",
                           "0.3",
                           Patterns::Double(-1., 0.5),
-                          "nu, -1 < nu < 0.5.");
+                          "nu, -1 < nu < 0.5; 0.5 (incompressible) only "
+                          "with the formulation IUnlP0.");
         prm.declare_entry("Bulk modulus",
                           "",
                           Patterns::Anything(),
@@ -201,14 +221,12 @@ namespace pg
                   ExcBadParameter("Material/Young's modulus",
                                   std::to_string(youngs_modulus),
                                   "it must be positive."));
-      AssertThrow(
-        poissons_ratio > -1. && poissons_ratio < 0.5,
-        ExcBadParameter("Material/Poisson's ratio",
-                        std::to_string(poissons_ratio),
-                        "it must lie in (-1, 0.5): at 0.5 the material is "
-                        "incompressible, lambda is infinite, and the "
-                        "displacement formulations lock. Use e.g. 0.499 or a "
-                        "mixed formulation (not yet available)."));
+      // (nu = 0.5 only with the incompressible formulation IUnlP0:
+      // AllParameters::parse_parameters() checks the pair)
+      AssertThrow(poissons_ratio > -1. && poissons_ratio <= 0.5,
+                  ExcBadParameter("Material/Poisson's ratio",
+                                  std::to_string(poissons_ratio),
+                                  "it must lie in (-1, 0.5]."));
 
       // The alternative pair: K and mu, both or neither.
       bulk_modulus.reset();

@@ -55,6 +55,20 @@ namespace pg
               y[b][c] = particles.position(members[b])[c] -
                         particles.position(k)[c] +
                         u_all[particles.dof(members[b], c)];
+          if (ppg)
+            view.family_elements->build_master_table(k, master_table);
+          const QuadratureTable<dim> &volumetric_table =
+            ppg ? master_table : (*view.family_tables)[f];
+          if (formulation.incompressible())
+            {
+              // IUnlP0: the family's pressure DoF; Theta = 1, and the
+              // dilatation written is theta-bar, where the constraint holds
+              field.particle_pressure[k] = u_all[particles.dof(k, dim)];
+              field.particle_dilatation[k] =
+                condensed_pressure(volumetric_table, y, *split).dilatation;
+              note(field.particle_pressure[k]);
+              continue;
+            }
           if (formulation.n_nodal_fields() > 0)
             {
               // U2P1C, Unl+P1C: the nodal values
@@ -64,10 +78,8 @@ namespace pg
               note(field.particle_pressure[k]);
               continue;
             }
-          if (ppg)
-            view.family_elements->build_master_table(k, master_table);
           const CondensedPressure value =
-            condensed_pressure(ppg ? master_table : (*view.family_tables)[f],
+            condensed_pressure(volumetric_table,
                                y,
                                *split,
                                formulation.condensed_pressure_degree());

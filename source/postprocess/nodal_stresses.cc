@@ -82,10 +82,18 @@ namespace pg
                               fe_stress[particles.vertex(k)][0][0] /
                                 fe_cells[particles.vertex(k)]));
 
-      const auto nodal_stress = [&](const unsigned int vertex) {
-        return particle_at[vertex] >= 0 ?
-                 material.cauchy_stress(particle_F[particle_at[vertex]]) :
-                 Tensor<2, 3>(fe_stress[vertex] / fe_cells[vertex]);
+      // (IUnlP0: the material is the isochoric part, and the pressure of
+      // the particle's family, a DoF, adds p I; no FE cells)
+      const bool incompressible = view.formulation->incompressible();
+      const auto nodal_stress   = [&](const unsigned int vertex) {
+        if (particle_at[vertex] < 0)
+          return Tensor<2, 3>(fe_stress[vertex] / fe_cells[vertex]);
+        const unsigned int k     = particle_at[vertex];
+        Tensor<2, 3>       sigma = material.cauchy_stress(particle_F[k]);
+        if (incompressible)
+          sigma += u_all[particles.dof(k, dim)] *
+                   Tensor<2, 3>(unit_symmetric_tensor<3>());
+        return sigma;
       };
       const auto exact_stress = [&](const Point<dim> &p) {
         return material.cauchy_stress(unit_symmetric_tensor<dim>() +

@@ -31,7 +31,8 @@ namespace pg
   void
   stress_field_values(const Materials::Material<dim> &material,
                       const Tensor<2, dim>           &F,
-                      std::vector<double>            &values)
+                      std::vector<double>            &values,
+                      const double                    pressure)
   {
     values.clear();
     for (unsigned int i = 0; i < dim; ++i)
@@ -45,6 +46,8 @@ namespace pg
     try
       {
         s = material.cauchy_stress(F);
+        for (unsigned int i = 0; i < 3; ++i)
+          s[i][i] += pressure;
       }
     catch (...)
       {
@@ -63,10 +66,12 @@ namespace pg
   StressPostprocessor<dim>::StressPostprocessor(
     const Materials::Material<dim>                            &material,
     const std::vector<bool>                                   &meshfree_cell,
-    const std::function<const Tensor<2, dim> *(unsigned int)> &particle_F)
+    const std::function<const Tensor<2, dim> *(unsigned int)> &particle_F,
+    const std::function<double(unsigned int)> &particle_pressure)
     : material(material)
     , meshfree_cell(meshfree_cell)
     , particle_F(particle_F)
+    , particle_pressure(particle_pressure)
   {}
 
 
@@ -99,6 +104,7 @@ namespace pg
     for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
       {
         Tensor<2, dim> F;
+        double         pressure = 0.;
         if (from_particles)
           {
             unsigned int nearest = 0;
@@ -107,6 +113,8 @@ namespace pg
                   cell->vertex(nearest).distance(inputs.evaluation_points[p]))
                 nearest = v;
             F = *particle_F(cell->vertex_index(nearest));
+            if (particle_pressure)
+              pressure = particle_pressure(cell->vertex_index(nearest));
           }
         else
           for (unsigned int i = 0; i < dim; ++i)
@@ -114,7 +122,7 @@ namespace pg
               F[i] = inputs.solution_gradients[p][i];
               F[i][i] += 1.;
             }
-        stress_field_values(material, F, values);
+        stress_field_values(material, F, values, pressure);
         for (unsigned int c = 0; c < values.size(); ++c)
           computed_quantities[p][c] = values[c];
       }
@@ -398,11 +406,13 @@ namespace pg
   template void
   stress_field_values<2>(const Materials::Material<2> &,
                          const Tensor<2, 2> &,
-                         std::vector<double> &);
+                         std::vector<double> &,
+                         const double);
   template void
   stress_field_values<3>(const Materials::Material<3> &,
                          const Tensor<2, 3> &,
-                         std::vector<double> &);
+                         std::vector<double> &,
+                         const double);
   template class StressPostprocessor<2>;
   template class StressPostprocessor<3>;
   template class ParticleOutput<2>;

@@ -52,6 +52,8 @@ namespace pg
       if (formulation.method != FormulationCode::Method::fem && !cpd)
         pcout << " (" << formulation.method_name() << ", "
               << (unl_p0 ? "UnlP0" :
+                  formulation.incompressible() ?
+                           "IUnlP0" :
                   formulation.fields == FormulationCode::Fields::condensed_p1 ?
                            "U2P1" :
                   formulation.fields == FormulationCode::Fields::nodal_p1 ?
@@ -108,6 +110,9 @@ namespace pg
           else
             pcout << ", E = " << prm.material.youngs_modulus
                   << ", nu = " << prm.material.poissons_ratio;
+          if (formulation.incompressible())
+            pcout << " (incompressible: mu = " << prm.material.mu()
+                  << ", the volume held by the family pressures)";
           // Volumetric locking: the displacement formulations constrain
           // the volume at every evaluation point; its measure is K / mu.
           const double locking =

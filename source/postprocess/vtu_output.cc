@@ -33,6 +33,12 @@ namespace pg
                              RunSummary             &summary)
     {
       write(view, step.number, step.time, statistics, summary);
+      // IUnlP0: the pressure is a primary unknown (one per family); a
+      // checkerboard shows in its range
+      if (view.formulation->incompressible())
+        *view.pcout << "  family pressure: min "
+                    << summary.condensed_pressure_range[0] << ", max "
+                    << summary.condensed_pressure_range[1] << std::endl;
     }
 
 
@@ -89,7 +95,8 @@ namespace pg
       DataOut<dim>   data_out;
       data_out.attach_dof_handler(*view.dof_handler);
       // U2P1C, Unl+P1C: the nodal pressure and Theta - theta(I) (zero on
-      // the FE cells, whose condensed fields are the cell data below)
+      // the FE cells, whose condensed fields are the cell data below);
+      // IUnlP0: the pressure of each particle's family
       std::vector<std::string> names(dim, "displacement");
       std::vector<DataComponentInterpretation::DataComponentInterpretation>
         interpretation(
@@ -97,10 +104,14 @@ namespace pg
           DataComponentInterpretation::component_is_part_of_vector);
       if (view.formulation->n_nodal_fields() > 0)
         {
-          names.emplace_back("nodal_pressure");
-          names.emplace_back("nodal_dilatation_change");
-          interpretation
-            .resize(dim + 2, DataComponentInterpretation::component_is_scalar);
+          names.emplace_back(view.formulation->incompressible() ?
+                               "family_pressure" :
+                               "nodal_pressure");
+          if (view.formulation->n_nodal_fields() == 2)
+            names.emplace_back("nodal_dilatation_change");
+          interpretation.resize(
+            dim + view.formulation->n_nodal_fields(),
+            DataComponentInterpretation::component_is_scalar);
         }
       data_out.add_data_vector(u_full,
                                names,
@@ -112,12 +123,21 @@ namespace pg
       std::vector<int> particle_at(view.triangulation->n_vertices(), -1);
       for (unsigned int k = 0; k < particles.n_particles(); ++k)
         particle_at[particles.vertex(k)] = k;
+      // IUnlP0: the material is the isochoric part; its pressure is the
+      // family's DoF
+      const bool incompressible = view.formulation->incompressible();
+      std::function<double(unsigned int)> family_pressure;
+      if (incompressible)
+        family_pressure = [&](const unsigned int v) {
+          return pressure->particle_pressure[particle_at[v]];
+        };
       const StressPostprocessor<dim> stress(
         material,
         *view.meshfree,
         [&](const unsigned int v) -> const Tensor<2, dim> * {
           return particle_at[v] >= 0 ? &particle_F[particle_at[v]] : nullptr;
-        });
+        },
+        family_pressure);
       data_out.add_data_vector(u_full, stress);
       const auto   &meshfree = *view.meshfree;
       Vector<float> meshfree_cell(view.triangulation->n_active_cells());
@@ -156,7 +176,11 @@ namespace pg
           data.clear();
           for (unsigned int c = 0; c < dim; ++c)
             data.push_back(u_full[particles.dof(k, c)]);
-          stress_field_values(material, particle_F[k], stress_values);
+          stress_field_values(material,
+                              particle_F[k],
+                              stress_values,
+                              incompressible ? pressure->particle_pressure[k] :
+                                               0.);
           data.insert(data.end(), stress_values.begin(), stress_values.end());
           data.push_back(particles.volume(k));
           for (unsigned int c = 0; c < dim; ++c)

@@ -107,7 +107,8 @@ namespace pg
     // The element groups: Q1 cells first, then the families (PG or CPD).
     // The mixed codes (UnlP0, U2P1, FEM Q1P0) condense p and Theta per
     // element with the isochoric/volumetric split of the material; U2P1C
-    // and Unl+P1C have them as nodal DoFs of the particles.
+    // and Unl+P1C have them as nodal DoFs of the particles, IUnlP0 its
+    // family pressure.
     const Materials::VolumetricSplit<dim> *condensed_pressure = nullptr;
     if (formulation.mixed())
       {
@@ -126,6 +127,16 @@ namespace pg
                                         discretization.families,
                                         particles,
                                         *discretization.cpd);
+    else if (formulation.incompressible())
+      family_group = std::make_unique<IncompressibleFamilyGroup<dim>>(
+        discretization.owned_families,
+        discretization.families,
+        particles,
+        discretization.family_tables,
+        *condensed_pressure,
+        formulation.method != FormulationCode::Method::pbg ?
+          discretization.family_elements.get() :
+          nullptr);
     else if (formulation.n_nodal_fields() > 0)
       family_group = std::make_unique<NodalPressureFamilyGroup<dim>>(
         discretization.owned_families,
@@ -171,6 +182,7 @@ namespace pg
     // Mixed elements: p and Theta as Newton iterates (not for the explicit
     // integrator, which has no Newton updates: the closed form)
     condensed_field_iterates = formulation.mixed() &&
+                               !formulation.incompressible() &&
                                prm.newton.linearized_condensed_fields &&
                                prm.time.integrator != "leapfrog";
     if (condensed_field_iterates)

@@ -63,7 +63,10 @@ main()
                                  "VCPBG U2P1C",
                                  "PBG U2P1C",
                                  "VCPBG Unl+P1C",
-                                 "VCPBG V5sn Unl+P1C noBC"})
+                                 "VCPBG V5sn Unl+P1C noBC",
+                                 "VCPBG IUnlP0",
+                                 "VCPPG IUnlP0",
+                                 "PBG IUnlP0 noBC"})
     {
       const FormulationCode f     = parse_formulation_code(code);
       const FormulationCode again = parse_formulation_code(f.text);
@@ -88,7 +91,7 @@ main()
         "PBG Unl noBC noBC", "BCBCPBG Unl",    "VCPBG V2sn Unl",
         "PBG V5sn Unl",      "VC2PPG V1sn U2", "PPG U1",
         "VCPPG Unl UL",      "PBG Unl U2",     "XPBG Unl",
-        "VCPPG2 V3sn UnlP0", "PBG UnlP0 Unl",  "PBG IUnlP0",
+        "VCPPG2 V3sn UnlP0", "PBG UnlP0 Unl",  "VCPPG2 IUnlP0",
         "VCPPG U2P1",        "FEM Q2",         "FEM Q1P0 H1P0",
         "BCPBG U2P1",        "PBG U2P1 U2",    "VCPPG U1SUnl",
         "VCPPG U1SIG",       "VC2PPG V2s U2",  "BCPBG U1SIG",

@@ -53,7 +53,16 @@ main(int argc, char **argv)
         "subsection Discretization\n  set Formulation = XPBG Unl\nend\n");
   check("formulation not yet available",
         "subsection Discretization\n"
+        "  set Formulation = VCPBG V5sn Unl UL\nend\n");
+  check("incompressible formulation with a compressible material",
+        "subsection Discretization\n"
         "  set Formulation = VCPBG V5sn IUnlP0\nend\n");
+  check("incompressible formulation coupled to finite elements",
+        "subsection Geometry\n  set Meshfree region = box 0, 0 : 0.5, 1\n"
+        "end\n"
+        "subsection Discretization\n"
+        "  set Formulation = VCPBG V5sn IUnlP0\nend\n"
+        "subsection Material\n  set Poisson's ratio = 0.5\nend\n");
   check("mixed formulation on a material without the volumetric split",
         "subsection Discretization\n"
         "  set Formulation = VCPPG V3sn UnlP0\nend\n"

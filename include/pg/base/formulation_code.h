@@ -13,7 +13,7 @@ namespace pg
    * table's defaults: BC for every first-order formulation (Unl; U1 has no
    * bond to correct, U2 is second order), V3 for PPG, V5 for PBG, the
    * boundary option sn, TL. "noBC" switches the bond correction
-   * off. Parts that are not built yet (IUnlP0, UL) are rejected with a "not yet
+   * off. Parts that are not built yet (UL) are rejected with a "not yet
    * available" message, never ignored. The readings where the table is silent
    * are in doc/ambiguities.md.
    */
@@ -71,7 +71,15 @@ namespace pg
        * at the master; Unl+P1C adds a condensed bubble (#bubble). The FE
        * cells of a coupled model are Q1P0/H1P0.
        */
-      nodal_p1
+      nodal_p1,
+      /**
+       * IUnlP0 (pg-methods.md section 12.2.1, Table 7.1): the
+       * incompressible UnlP0, Theta = 1 and p^k constant per family; p^k
+       * cannot be condensed (K_pp = 0), so it is a global DoF, the one
+       * extra nodal field of particle k (dofs/field_layout.h). Meshfree
+       * models only (no FE counterpart), nu = 0.5.
+       */
+      incompressible_p0
     };
 
     /** The VC correction function (eqs. 5.60-5.64). */
@@ -166,12 +174,22 @@ namespace pg
     }
     /**
      * The number of extra nodal fields of the particles: 2 (p and Theta)
-     * for U2P1C and Unl+P1C, else 0.
+     * for U2P1C and Unl+P1C, 1 (p of the particle's family) for IUnlP0,
+     * else 0.
      */
     unsigned int
     n_nodal_fields() const
     {
-      return fields == Fields::nodal_p1 ? 2 : 0;
+      return fields == Fields::nodal_p1          ? 2 :
+             fields == Fields::incompressible_p0 ? 1 :
+                                                   0;
+    }
+
+    /** True for IUnlP0: exactly incompressible, nu = 0.5. */
+    bool
+    incompressible() const
+    {
+      return fields == Fields::incompressible_p0;
     }
 
     /**

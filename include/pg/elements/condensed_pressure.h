@@ -161,6 +161,44 @@ namespace pg
     FullMatrix<double>                    *tangent,
     const unsigned int                     degree  = 0,
     CondensedFieldIterate                 *iterate = nullptr);
+
+  /**
+   * The family residual and tangent of IUnlP0, the incompressible UnlP0
+   * (pg-methods.md section 12.2.1, Table 7.1): Theta = 1 and the family's
+   * pressure p^k, constant, a global unknown (K_pp = 0, so it cannot be
+   * condensed). With the potential
+   * @f[ \Pi^k = \sum_q w_q W_{iso}(\mathbf F_q)
+   *     + p^k \sum_{q\,\in\,vol} w_q (\theta_q - \theta(\mathbf I)), @f]
+   * the blocks are
+   * @f[ r_{aA} = \sum_q w_q P^{iso}_{AB} T^{qa}_B + p^k g_{aA}, \qquad
+   *     r_p = \sum_{q\,\in\,vol} w_q (\theta_q - \theta(\mathbf I)), @f]
+   * @f[ k_{aA,bC} = (\text{isochoric tangent}) + p^k \sum_{q\,\in\,vol}
+   *     w_q T^{qa}_B \frac{\partial^2\theta}{\partial F_{AB}\partial
+   *     F_{CD}} B^{qb}_D, \quad k_{aA,p} = g_{aA}, \quad
+   *     k_{p,bC} = \bar g_{bC}, \quad k_{pp} = 0, @f]
+   * with g (test vectors) and g-bar (trial vectors) as in
+   * assemble_condensed_pressure_element(): a saddle point, symmetric for PBG.
+   * The volumetric points are those of @p table (PBG, nullptr) or of the
+   * one-point master table @p volumetric_table (PPG, eq. 6.7). theta is the
+   * split's volume measure (J; tr eps for linear elasticity) and its
+   * volumetric energy is not used.
+   *
+   * Local DoFs: u of the n nodes node-major (a * dim + A), then p^k (n *
+   * dim). Units: force (u rows), volume (p row). Overwrites @p residual and
+   * @p tangent (nullptr: residual only). Throws if J <= 0 at a point.
+   * Returns the mean volume measure theta-bar of the volumetric points
+   * (1 when the constraint holds).
+   */
+  template <int dim>
+  double
+  assemble_incompressible_p0_element(
+    const QuadratureTable<dim>            &table,
+    const QuadratureTable<dim>            *volumetric_table,
+    const std::vector<Tensor<1, dim>>     &y,
+    const Materials::VolumetricSplit<dim> &material,
+    const double                           pressure,
+    Vector<double>                        &residual,
+    FullMatrix<double>                    *tangent);
 } // namespace pg
 
 #endif

@@ -59,6 +59,56 @@ namespace pg
     const Materials::VolumetricSplit<dim>   &material;
     const bool                               bubble;
   };
+
+
+
+  /**
+   * The families of IUnlP0, the incompressible UnlP0 (pg-methods.md
+   * section 12.2.1): Unl families (PBG or PPG tables) whose constant
+   * pressure p^k is the one extra nodal field of the master particle k
+   * (ParticleSet::dof(k, dim)). Element e has the DoFs u of its members
+   * node-major, then p^k (assemble_incompressible_p0_element()); the
+   * volumetric points are the table's (PBG) or the master's (PPG, from
+   * @p family_elements).
+   */
+  template <int dim>
+  class IncompressibleFamilyGroup : public FamilyGroupBase<dim>
+  {
+  public:
+    IncompressibleFamilyGroup(
+      const std::vector<unsigned int>         &owned_families,
+      const FamilySet<dim>                    &families,
+      const ParticleSet<dim>                  &particles,
+      const std::vector<QuadratureTable<dim>> &family_tables,
+      const Materials::VolumetricSplit<dim>   &material,
+      const FamilyElements<dim>               *family_elements);
+
+    std::string
+    name() const override;
+
+    void
+    get_dof_indices(const unsigned int                    e,
+                    std::vector<types::global_dof_index> &dofs) const override;
+
+    unsigned int
+    n_evaluation_points(const unsigned int e) const override;
+
+    std::unique_ptr<GroupScratch>
+    create_scratch() const override;
+
+    void
+    assemble(const unsigned int           e,
+             const LinearAlgebra::Vector &u,
+             const ElementHistory        &history,
+             GroupScratch                &scratch,
+             LocalSystem                 &local) const override;
+
+  private:
+    const std::vector<QuadratureTable<dim>> &family_tables;
+    const Materials::VolumetricSplit<dim>   &material;
+    /** PPG: builds the master table; nullptr for PBG. */
+    const FamilyElements<dim> *family_elements;
+  };
 } // namespace pg
 
 #endif

@@ -60,6 +60,21 @@ namespace pg
       mu() const;
 
       /**
+       * True for nu = 0.5 (given as 'Poisson's ratio'): the material of
+       * the incompressible formulation IUnlP0; lambda() is infinite.
+       */
+      bool
+      incompressible() const;
+
+      /**
+       * The same shear modulus with the bulk modulus K = 0: the isochoric
+       * part alone, for IUnlP0, whose volume is constrained by its pressure
+       * (pg-methods.md section 12.2.1) and whose K is infinite.
+       */
+      Material
+      without_volumetric_energy() const;
+
+      /**
        * The same material with Poisson's ratio @p nu and the same Young's
        * modulus (K and mu recomputed from them if they were given): the
        * pseudo-material of U1SUnl, eq. (6.20).

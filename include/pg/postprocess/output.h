@@ -24,12 +24,18 @@ namespace pg
   std::vector<std::string>
   stress_field_names();
 
-  /** The values belonging to stress_field_names() at @p F. */
+  /**
+   * The values belonging to stress_field_names() at @p F, with the
+   * hydrostatic Cauchy stress @p pressure I added (IUnlP0, whose material is
+   * the isochoric part and whose volumetric stress p J F^-T is p I in
+   * Cauchy's measure; the von Mises stress does not change).
+   */
   template <int dim>
   void
   stress_field_values(const Materials::Material<dim> &material,
                       const Tensor<2, dim>           &F,
-                      std::vector<double>            &values);
+                      std::vector<double>            &values,
+                      const double                    pressure = 0.);
 
   /**
    * DataPostprocessor for the cells: deformation gradient, Cauchy stress
@@ -48,12 +54,14 @@ namespace pg
      * @p particle_F(v) is the deformation gradient of the particle at
      * vertex v, or nullptr if vertex v is no particle; cells all of whose
      * vertices are particles and that are flagged in @p meshfree_cell
-     * (indexed by active cell index) take those values.
+     * (indexed by active cell index) take those values, and the
+     * pressure @p particle_pressure(v) if it is given (IUnlP0).
      */
     StressPostprocessor(
       const Materials::Material<dim>                            &material,
       const std::vector<bool>                                   &meshfree_cell,
-      const std::function<const Tensor<2, dim> *(unsigned int)> &particle_F);
+      const std::function<const Tensor<2, dim> *(unsigned int)> &particle_F,
+      const std::function<double(unsigned int)> &particle_pressure = {});
 
     /** The Q1 gradient on every cell. */
     explicit StressPostprocessor(const Materials::Material<dim> &material);
@@ -73,6 +81,11 @@ namespace pg
     const Materials::Material<dim>                           &material;
     const std::vector<bool>                                   meshfree_cell;
     const std::function<const Tensor<2, dim> *(unsigned int)> particle_F;
+    /**
+     * IUnlP0: the pressure of the particle at vertex v, added to its
+     * stress (stress_field_values()); empty for the other formulations.
+     */
+    const std::function<double(unsigned int)> particle_pressure;
   };
 
   /**
