@@ -13,7 +13,8 @@
 # append its rows). U1SUnl (eq. 6.18) is shown with the displacement
 # formulations: its pseudo-energy takes nu~ = 0.49; the quadratic U2 and its
 # mixed U2P1 (eq. 6.10, p and Theta linear per family) as a pair too, and
-# the mixed codes with nodal p and Theta, Unl+P1C and U2P1C.
+# the mixed codes with nodal p and Theta, Unl+P1C and U2P1C; and the
+# incompressible IUnlP0 at nu = 0.5 with the same shear modulus.
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/near_incompressible_cook.sh build-release/applications/pg_solve/pg_solve
 set -e
@@ -23,12 +24,14 @@ WORK=$(mktemp -d)
 mkdir -p "$OUT" doc/figures
 RESULTS="$OUT/results.txt"
 
-run() { # label formulation N [meshfree region [horizon factor]]
+run() { # label formulation N [meshfree region [horizon factor [nu [E]]]]
   # ONLY=<label>: run that method alone and append its rows
   [ -n "$ONLY" ] && [ "$1" != "$ONLY" ] && return 0
   name=$(echo "$1_$3" | tr ' /' '__')
   region=${4:-all}
   horizon=${5:-2.51}
+  nu=${6:-0.4999}
+  E=${7:-108.571428571428571}
   [ "$2" = FEM ] || [ "$2" = "FEM Q1P0" ] && region=none
   cat > "$WORK/$name.prm" <<END
 set Dimension = 2
@@ -44,8 +47,8 @@ subsection Discretization
 end
 subsection Material
   set Model           = isochoric-volumetric neo-Hooke
-  set Young's modulus = 108.571428571428571
-  set Poisson's ratio = 0.4999
+  set Young's modulus = $E
+  set Poisson's ratio = $nu
 end
 subsection Boundary conditions
   set Dirichlet = 0: xy
@@ -102,6 +105,10 @@ for N in 4 8 16 32 64; do
   # nodal p and Theta (eqs. 6.11-6.16)
   run "VCBCPBG V5sn Unl+P1C" "VCBCPBG V5sn Unl+P1C" $N
   run "VCPBG V5sn U2P1C" "VCPBG V5sn U2P1C" $N all 3.51
+  # the incompressible IUnlP0 at nu = 0.5 with the same mu = E / (2 (1 +
+  # 0.4999)) (E = 3 mu): the incompressible limit of the reference problem
+  run "VCBCPBG V5sn IUnlP0" "VCBCPBG V5sn IUnlP0" $N all 2.51 0.5 108.578667149239
+  run "VCBCPPG V3sn IUnlP0" "VCBCPPG V3sn IUnlP0" $N all 2.51 0.5 108.578667149239
 done
 rm -rf "$WORK"
 fi

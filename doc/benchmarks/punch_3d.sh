@@ -40,6 +40,7 @@ RESULTS="$OUT/results.txt"
 0.49999|FEM H1P0|direct|4 8 12 16 24;\
 0.49999|VCPBG Unl|direct|4 8 12;\
 0.49999|VCPBG UnlP0|direct|4 8 12;\
+0.49999|VCPPG UnlP0|direct|4 8 12;\
 0.49999|PBG Unl+P1C|direct|4 8 12;\
 0.5|VCPPG IUnlP0|direct|4 8 12;\
 0.5|VCPBG IUnlP0|direct|4 8 12"

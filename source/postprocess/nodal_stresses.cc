@@ -83,8 +83,11 @@ namespace pg
                                 fe_cells[particles.vertex(k)]));
 
       // (IUnlP0: the material is the isochoric part, and the pressure of
-      // the particle's family, a DoF, adds p I; no FE cells)
+      // the particle's family, a DoF, adds p I; no FE cells. Its exact
+      // stress would need the exact pressure, which the exact displacement
+      // does not give: not written.)
       const bool incompressible = view.formulation->incompressible();
+      const bool with_exact     = prm.compute_errors && !incompressible;
       const auto nodal_stress   = [&](const unsigned int vertex) {
         if (particle_at[vertex] < 0)
           return Tensor<2, 3>(fe_stress[vertex] / fe_cells[vertex]);
@@ -128,7 +131,7 @@ namespace pg
             continue;
           summary.point_stresses.emplace_back(name,
                                               in_plane(nodal_stress(nearest)));
-          if (prm.compute_errors)
+          if (with_exact)
             summary.point_exact_stresses.emplace_back(name,
                                                       in_plane(exact_stress(
                                                         vertices[nearest])));
@@ -145,8 +148,7 @@ namespace pg
             << " (particles: the particle value; FE vertices: the average of "
                "the adjacent cells)\n# boundary_id x y"
             << (dim == 3 ? " z" : "") << " sigma_xx sigma_yy sigma_xy"
-            << (prm.compute_errors ? " exact_xx exact_yy exact_xy" : "")
-            << " side\n"
+            << (with_exact ? " exact_xx exact_yy exact_xy" : "") << " side\n"
             << std::setprecision(8);
       std::vector<bool> written(n_vertices, false);
       for (const auto &cell : triangulation.active_cell_iterators())
@@ -165,7 +167,7 @@ namespace pg
                 table << static_cast<int>(cell->face(f)->boundary_id()) << " "
                       << cell->face(f)->vertex(v) << " " << sigma[0][0] << " "
                       << sigma[1][1] << " " << sigma[0][1];
-                if (prm.compute_errors)
+                if (with_exact)
                   {
                     const Tensor<2, 3> exact =
                       exact_stress(cell->face(f)->vertex(v));
