@@ -42,6 +42,24 @@ print_bound(const std::string &name, const double value, const double bound)
 }
 
 /**
+ * "yes" if @p value <= @p bound, else "NO (value)"; "n/a" for a negative
+ * @p value, which the checks use for "does not apply" (their values are
+ * norms).
+ */
+inline std::string
+verdict(const double value, const double bound)
+{
+  std::ostringstream s;
+  if (value < 0)
+    s << "n/a";
+  else if (value <= bound)
+    s << "yes";
+  else
+    s << "NO (" << value << ")";
+  return s.str();
+}
+
+/**
  * The message of a deal.II exception (its print_info() text) without the
  * trailing blanks and line breaks.
  */

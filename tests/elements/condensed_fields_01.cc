@@ -289,14 +289,6 @@ test()
   const double mu = parameters.mu();
 
   const auto report = [&](const std::string &name, const Errors &worst) {
-    const auto verdict = [](const double v, const double bound) {
-      std::ostringstream s;
-      if (v <= bound)
-        s << "yes";
-      else
-        s << "NO (" << v << ")";
-      return s.str();
-    };
     deallog << dim << "d " << name << ": at equilibrium = closed form: "
             << verdict(worst.equilibrium, 1e-12);
     if (name.find("U2P1") == std::string::npos)

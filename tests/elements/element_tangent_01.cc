@@ -101,14 +101,6 @@ test()
 
   const auto report = [&](const std::string           &name,
                           const std::array<double, 3> &worst) {
-    const auto verdict = [](const double v, const double bound) {
-      std::ostringstream s;
-      if (v <= bound)
-        s << "yes";
-      else
-        s << "NO (" << v << ")";
-      return s.str();
-    };
     deallog << dim << "d " << name
             << ": tangent = FD: " << verdict(worst[0], 1e-6)
             << ", translation: " << verdict(worst[1], 1e-12)

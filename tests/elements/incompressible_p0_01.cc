@@ -214,16 +214,6 @@ test()
   std::mt19937 rng(11);
 
   const auto report = [&](const std::string &name, const Errors &worst) {
-    const auto verdict = [](const double v, const double bound) {
-      std::ostringstream s;
-      if (v < 0)
-        s << "n/a";
-      else if (v <= bound)
-        s << "yes";
-      else
-        s << "NO (" << v << ")";
-      return s.str();
-    };
     deallog << dim << "d " << name
             << ": tangent = FD(r): " << verdict(worst.tangent, 1e-6)
             << ", r = FD(Pi): " << verdict(worst.potential, 1e-6)

@@ -272,10 +272,6 @@ test()
       hg_affine = std::max(hg_affine, force.linfty_norm() / random_force);
     }
 
-  const auto verdict = [](const double value, const double bound) {
-    return value <= bound ? std::string("yes") :
-                            "NO (" + std::to_string(value) + ")";
-  };
   deallog << dim << "d U1SUnl: tangent = FD: " << verdict(u1s_tangent, 1e-6)
           << ", rigid motions: " << verdict(u1s_rigid, 1e-12)
           << ", = Unl for W~ = W: " << verdict(u1s_equal_unl, 1e-13)
@@ -391,10 +387,6 @@ test_implicit_gradients()
                                    std::sqrt(V / numbers::PI);
   const double exact =
     (dim == 3 ? V * radius * radius / 5. : V * radius * radius / 4.);
-  const auto verdict = [](const double value, const double bound) {
-    return value <= bound ? std::string("yes") :
-                            "NO (" + std::to_string(value) + ")";
-  };
   deallog << dim << "d U1SIG: r = FD(energy): " << verdict(energy, 1e-7)
           << ", tangent = FD: " << verdict(tangent, 1e-6)
           << ", symmetric: " << verdict(symmetry, 1e-13)
