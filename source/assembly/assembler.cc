@@ -295,15 +295,24 @@ namespace pg
                                local);
                 if (!all_finite(local.residual,
                                 with_matrix ? &local.matrix : nullptr))
-                  throw std::runtime_error(
-                    non_finite_message(group.element_name(*it),
-                                       group.element_position(*it),
-                                       group.non_finite_hint()));
+                  {
+                    local.dofs.clear();
+                    record_failure(
+                      non_finite_message(group.element_name(*it),
+                                         group.element_position(*it),
+                                         group.non_finite_hint()));
+                  }
               }
             catch (const std::exception &e)
               {
+                // (the kernels do not know which element they evaluate:
+                // the message names it, e.g. an inverted family)
                 local.dofs.clear();
-                record_failure(user_message(e));
+                std::ostringstream where;
+                where << "In " << group.element_name(*it) << " at ("
+                      << group.element_position(*it)
+                      << "): " << user_message(e);
+                record_failure(where.str());
               }
           },
           [this](const LocalSystem &local) { distribute(local); },
