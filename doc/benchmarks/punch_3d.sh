@@ -32,8 +32,8 @@ RESULTS="$OUT/results.txt"
 # reasonable time, so those runs use the direct solver.
 [ -n "$RUNS" ] || RUNS="0.4|FEM|cg|4 8 12 16 24 32;\
 0.4|FEM H1P0|cg|4 8 12 16 24 32 40;\
-0.4|PPG Unl|gmres|4 8 12;\
-0.4|PBG Unl|cg|4 8 12;\
+0.4|PPG Unl|gmres|4 8 12 16;\
+0.4|PBG Unl|cg|4 8 12 16;\
 0.4|VCPBG Unl|cg|4 8 12 16;\
 0.4|VCPBG U1SIG|cg|4 8 12;\
 0.49999|FEM|direct|4 8 12 16;\
