@@ -364,11 +364,13 @@ namespace pg
             "(or 'VCPPG V3sn IUnlP0'), or a nearly incompressible nu such as "
             "0.4999 with a mixed code ('VCPBG V5sn UnlP0', 'VCPBG V5sn "
             "Unl+P1C', 'FEM Q1P0')."));
+      std::ostringstream nu_text;
+      nu_text << material.poissons_ratio;
       AssertThrow(
         material.incompressible() || !code.incompressible(),
         ExcBadParameter(
           "Material/Poisson's ratio",
-          (std::ostringstream() << material.poissons_ratio).str(),
+          nu_text.str(),
           "the formulation <" + code.text +
             "> (subsection 'Discretization') is exactly incompressible "
             "(Theta = 1, Table 7.1): set 'Poisson's ratio = 0.5' with "
