@@ -12,7 +12,8 @@
 #       'Stagnation tolerance = 1e-4' (the round-off floor of the residual
 #       is 1e-8 to 1e-5 |R_0| at K/mu = 5e6): FEM Q1, FEM H1P0, VCBCPBG V5sn
 #       Unl, BCPBG UnlP0, VCBCPBG V5sn UnlP0, VCBCPBG V5sn Unl+P1C (nodal
-#       p and Theta); reference: FEM H1P0 on the
+#       p and Theta), and the incompressible VCBCPBG V5sn IUnlP0 at nu = 0.5
+#       with the same mu; reference: FEM H1P0 on the
 #       regular meshes n = 16, 24, 32, extrapolated. The mixed codes run with the default
 #       'Condensed fields = linearized'; with 'equilibrium' (CONDENSED=
 #       equilibrium) they need 32 load steps (LOAD_STEPS_B=32) and some 500
@@ -29,7 +30,7 @@ WORK=$(mktemp -d)
 mkdir -p "$OUT" doc/figures
 RESULTS="$OUT/results.txt"
 
-run() { # panel label formulation n distortion nu solver [load steps [stagnation tolerance]]
+run() { # panel label formulation n distortion nu solver [load steps [stagnation tolerance [E]]]
   [ -n "$ONLY" ] && [ "$2" != "$ONLY" ] && return 0
   name=$(echo "$1_$2_$4" | tr ' /' '__')
   nz=$(( $4 / 4 )); [ $nz -ge 1 ] || nz=1
@@ -45,6 +46,7 @@ subsection Discretization
 end
 subsection Material
   set Poisson's ratio = $6
+  ${10:+set Young's modulus = ${10}}
 end
 subsection Linear solver
   set Type = $7
@@ -103,6 +105,8 @@ for n in 4 8 12 16 24; do
   run b "BCPBG UnlP0" "BCPBG UnlP0" $n 0.3 0.4999999 direct $steps 1e-4
   run b "VCBCPBG V5sn UnlP0" "VCBCPBG V5sn UnlP0" $n 0.3 0.4999999 direct $steps 1e-4
   run b "VCBCPBG V5sn Unl+P1C" "VCBCPBG V5sn Unl+P1C" $n 0.3 0.4999999 direct $steps 1e-4
+  # the incompressible limit: nu = 0.5 with the same mu (E = 3 mu)
+  run b "VCBCPBG V5sn IUnlP0" "VCBCPBG V5sn IUnlP0" $n 0.3 0.5 direct $steps 1e-4 108.5714358095243
 done
 fi
 rm -rf "$WORK"
