@@ -1,3 +1,4 @@
+#include <pg/base/exceptions.h>
 #include <pg/solvers/linear_solver.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -12,10 +13,14 @@
 #include <Amesos.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
+#include <ml_ValidateParameters.h>
+#include <ml_config.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace pg
@@ -80,7 +85,99 @@ namespace pg
             }
       return modes;
     }
+
+
+
   } // namespace
+
+
+
+  void
+  set_ml_parameter(Teuchos::ParameterList &list,
+                   const std::string      &name,
+                   const std::string      &value)
+  {
+    static const std::unique_ptr<const Teuchos::ParameterList> valid(
+      ML_Epetra::GetValidMLPParameters());
+    const std::string entry = "Linear solver/AMG parameters";
+    const std::string item  = name + " = " + value;
+    // ML's list of valid parameters leaves out the coarse-level entries
+    // that it reads all the same ('coarse: max size', 'coarse: type'):
+    // their type is the one the value reads as.
+    const Teuchos::ParameterEntry *known  = valid->getEntryPtr(name);
+    const bool                     coarse = (name.rfind("coarse: ", 0) == 0);
+    AssertThrow((known != nullptr && !known->isList()) || coarse,
+                ExcBadParameter(entry,
+                                item,
+                                "ML has no parameter '" + name +
+                                  "' (the names are ML's, case and blanks "
+                                  "included: ML user's guide, chapter 6)."));
+#ifndef HAVE_ML_METIS
+    // without METIS, ML puts all nodes into one aggregate and then stops
+    // the process from inside MPI
+    AssertThrow(name.rfind("aggregation: type", 0) != 0 ||
+                  value.find("METIS") == std::string::npos,
+                ExcBadParameter(entry,
+                                item,
+                                "this Trilinos ML was built without METIS: "
+                                "use 'Uncoupled', 'MIS' or 'Uncoupled-MIS'."));
+#endif
+    const auto reads_as = [&value](auto &number, const auto &convert) {
+      char *end = nullptr;
+      number    = convert(value.c_str(), &end);
+      return end != value.c_str() && *end == '\0';
+    };
+    long       integer = 0;
+    double     real    = 0.;
+    const auto to_long = [](const char *s, char **e) {
+      return std::strtol(s, e, 10);
+    };
+    const auto to_double = [](const char *s, char **e) {
+      return std::strtod(s, e);
+    };
+    // the type of ML's entry, else of the entry already in the list
+    // (deal.II's 'coarse: max size' is an int)
+    const Teuchos::ParameterEntry *typed =
+      (known != nullptr ? known : list.getEntryPtr(name));
+    if (typed == nullptr)
+      {
+        // a coarse-level entry: int, double, bool or string, as it reads
+        if (reads_as(integer, to_long))
+          list.set(name, static_cast<int>(integer));
+        else if (reads_as(real, to_double))
+          list.set(name, real);
+        else if (value == "true" || value == "false")
+          list.set(name, value == "true");
+        else
+          list.set(name, value);
+      }
+    else if (typed->isType<int>())
+      {
+        AssertThrow(reads_as(integer, to_long),
+                    ExcBadParameter(entry,
+                                    item,
+                                    "ML's '" + name + "' is an integer."));
+        list.set(name, static_cast<int>(integer));
+      }
+    else if (typed->isType<double>())
+      {
+        AssertThrow(reads_as(real, to_double),
+                    ExcBadParameter(entry,
+                                    item,
+                                    "ML's '" + name + "' is a number."));
+        list.set(name, real);
+      }
+    else if (typed->isType<bool>())
+      {
+        AssertThrow(value == "true" || value == "false",
+                    ExcBadParameter(entry,
+                                    item,
+                                    "ML's '" + name + "' is true or false."));
+        list.set(name, value == "true");
+      }
+    else
+      list.set(name, value);
+  }
 
 
 
@@ -117,22 +214,23 @@ namespace pg
     amg_data.constant_modes  = constant_modes;
     amg_data.elliptic        = (parameters.type == "cg");
     amg_data.smoother_sweeps = 2;
-    if (parameters.near_null_space == "translations")
-      amg.initialize(matrix, amg_data);
-    else
+    // deal.II's ML parameters, then the rigid body modes as the null
+    // space, then the user's 'AMG parameters'
+    Teuchos::ParameterList              ml_parameters;
+    std::unique_ptr<Epetra_MultiVector> translations;
+    amg_data.set_parameters(ml_parameters, translations, matrix);
+    std::unique_ptr<Epetra_MultiVector> modes;
+    if (parameters.near_null_space == "rigid body modes")
       {
-        // deal.II's parameters with the rigid body modes as the null space
-        Teuchos::ParameterList              ml_parameters;
-        std::unique_ptr<Epetra_MultiVector> translations;
-        amg_data.set_parameters(ml_parameters, translations, matrix);
-        const std::unique_ptr<Epetra_MultiVector> modes =
-          rigid_body_modes(dof_handler,
-                           matrix.trilinos_matrix().RowMatrixRowMap());
+        modes = rigid_body_modes(dof_handler,
+                                 matrix.trilinos_matrix().RowMatrixRowMap());
         ml_parameters.set("null space: type", "pre-computed");
         ml_parameters.set("null space: dimension", modes->NumVectors());
         ml_parameters.set("null space: vectors", modes->Values());
-        amg.initialize(matrix, ml_parameters);
       }
+    for (const auto &[name, value] : parameters.amg_parameters)
+      set_ml_parameter(ml_parameters, name, value);
+    amg.initialize(matrix, ml_parameters);
 
     SolverControl control(std::max<unsigned int>(1000, rhs.size()),
                           parameters.tolerance * rhs.l2_norm(),

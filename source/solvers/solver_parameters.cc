@@ -1,5 +1,10 @@
 #include <pg/base/exceptions.h>
+#include <pg/solvers/linear_solver.h>
 #include <pg/solvers/solver_parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <Teuchos_ParameterList.hpp>
 
 #include <sstream>
 #include <string>
@@ -179,6 +184,19 @@ namespace pg
           "cost grows like a 3-D factorization (the VC set-up of a 3-D "
           "cantilever at 56,355 DoFs: 147 s, with GMRES 2.5 s). "
           "summary.json 'vc_solve' says which one ran.");
+        prm.declare_entry(
+          "AMG parameters",
+          "",
+          Patterns::Anything(),
+          "Parameters of Trilinos ML (cg and gmres) that replace pg's, as "
+          "'name = value' pairs separated by ';', e.g. 'smoother: sweeps "
+          "= 3; aggregation: type = METIS; aggregation: nodes per "
+          "aggregate = 64'. The names are ML's (ML user's guide, chapter "
+          "6), and each value must have the type ML reads (int, "
+          "double, bool or string). pg's own list is deal.II's smoothed aggregation "
+          "(Chebyshev smoother, 2 sweeps, aggregation threshold 1e-4, "
+          "coarse size 2000) with the near-null space above. A name that "
+          "ML does not know stops the run before the set-up.");
       }
       prm.leave_subsection();
     }
@@ -194,6 +212,31 @@ namespace pg
         tolerance       = prm.get_double("Tolerance");
         near_null_space = prm.get("AMG near-null space");
         vc_solver       = prm.get("VC solver");
+        amg_parameters.clear();
+        const std::string list = prm.get("AMG parameters");
+        for (const std::string &item : Utilities::split_string_list(list, ';'))
+          {
+            if (item.empty())
+              continue;
+            const auto        equals = item.find('=');
+            const std::string name   = Utilities::trim(item.substr(0, equals));
+            const std::string value =
+              (equals == std::string::npos ?
+                 std::string() :
+                 Utilities::trim(item.substr(equals + 1)));
+            AssertThrow(
+              equals != std::string::npos && !name.empty() && !value.empty(),
+              ExcBadParameter("Linear solver/AMG parameters",
+                              list,
+                              "every item must read 'name = value' (items "
+                              "separated by ';'), e.g. 'smoother: sweeps = 3'; "
+                              "the item <" +
+                                item + "> does not."));
+            // the name and the type of the value, before the set-up
+            Teuchos::ParameterList check;
+            set_ml_parameter(check, name, value);
+            amg_parameters.emplace_back(name, value);
+          }
       }
       prm.leave_subsection();
     }

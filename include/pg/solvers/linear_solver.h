@@ -9,8 +9,25 @@
 
 #include <string>
 
+namespace Teuchos
+{
+  class ParameterList;
+}
+
 namespace pg
 {
+  /**
+   * Sets Trilinos ML's parameter @p name in @p list from the text @p value
+   * (an item of 'Linear solver/AMG parameters'), with the type that ML
+   * reads it as (int, double, bool or string, from ML's own list of valid
+   * parameters). Throws ExcBadParameter, naming the entry, for a name that
+   * ML does not know and for a value of the wrong type.
+   */
+  void
+  set_ml_parameter(Teuchos::ParameterList &list,
+                   const std::string      &name,
+                   const std::string      &value);
+
   /**
    * Solve K du = b with the solver of subsection 'Linear solver': Amesos
    * MUMPS (direct; KLU if Trilinos was built without MUMPS), or CG / GMRES

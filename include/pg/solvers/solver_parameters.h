@@ -6,6 +6,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 // The parameters of the solvers: load stepping (subsection "Loading"),
 // the Newton iteration ("Newton"), the linear solver ("Linear solver")
@@ -69,6 +71,11 @@ namespace pg
       std::string near_null_space;
       /** The VC correction system: automatic | direct */
       std::string vc_solver;
+      /**
+       * ML parameters that replace pg's (entry 'AMG parameters'), as
+       * (name, value) in the order given; the values are still text.
+       */
+      std::vector<std::pair<std::string, std::string>> amg_parameters;
 
       static void
       declare_parameters(ParameterHandler &prm);
