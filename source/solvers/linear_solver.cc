@@ -85,9 +85,6 @@ namespace pg
             }
       return modes;
     }
-
-
-
   } // namespace
 
 
