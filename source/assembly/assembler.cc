@@ -7,6 +7,9 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/base/work_stream.h>
 
+#include <Epetra_CrsMatrix.h>
+
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -118,8 +121,7 @@ namespace pg
   Assembler<dim>::add_sparsity(DynamicSparsityPattern &sparsity) const
   {
     for (const ElementGroup<dim> *group : groups)
-      for (unsigned int e = 0; e < group->n_elements(); ++e)
-        group->add_sparsity(e, constraints, sparsity);
+      group->add_group_sparsity(constraints, sparsity);
   }
 
 
@@ -194,7 +196,7 @@ namespace pg
     if (unconstrained)
       {
         if (with_matrix)
-          matrix->add(local.dofs, local.matrix);
+          add_to_matrix(local);
         if (in_range)
           {
             double *const rhs_values   = (*rhs).trilinos_vector()[0];
@@ -222,6 +224,80 @@ namespace pg
     else
       constraints.distribute_local_to_global(minus_residual, local.dofs, *rhs);
     force->add(local.dofs, local.residual);
+  }
+
+
+
+  template <int dim>
+  void
+  Assembler<dim>::add_to_matrix(const LocalSystem &local)
+  {
+    const Epetra_CrsMatrix &A       = matrix->trilinos_matrix();
+    const Epetra_BlockMap  &columns = A.ColMap();
+    const Epetra_BlockMap  &rows    = A.RowMap();
+    const unsigned int      n       = local.dofs.size();
+    local_columns.resize(n);
+    column_order.resize(n);
+    row_positions.resize(n);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        local_columns[j] = columns.LID(
+          static_cast<TrilinosWrappers::types::int_type>(local.dofs[j]));
+        if (local_columns[j] < 0) // not in the pattern: deal.II's message
+          {
+            matrix->add(local.dofs, local.matrix);
+            return;
+          }
+        column_order[j] = j;
+      }
+    std::sort(column_order.begin(),
+              column_order.end(),
+              [&](const unsigned int a, const unsigned int b) {
+                return local_columns[a] < local_columns[b];
+              });
+
+    bool have_positions = false;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double *const local_row = &local.matrix(i, 0);
+        const int           row       = rows.LID(
+          static_cast<TrilinosWrappers::types::int_type>(local.dofs[i]));
+        int     n_entries = 0;
+        double *values    = nullptr;
+        int    *indices   = nullptr;
+        if (row < 0 || A.ExtractMyRowView(row, n_entries, values, indices) != 0)
+          {
+            matrix->add(local.dofs[i], n, local.dofs.data(), local_row);
+            continue;
+          }
+        // the positions of the previous row fit if its column list is the
+        // same (the rows of one particle's components)
+        bool found = have_positions;
+        for (unsigned int t = 0; found && t < n; ++t)
+          found = (row_positions[t] < n_entries &&
+                   indices[row_positions[t]] == local_columns[column_order[t]]);
+        if (!found)
+          {
+            found = true;
+            int p = 0;
+            for (unsigned int t = 0; found && t < n; ++t)
+              {
+                const int c = local_columns[column_order[t]];
+                while (p < n_entries && indices[p] < c)
+                  ++p;
+                found            = (p < n_entries && indices[p] == c);
+                row_positions[t] = p;
+              }
+          }
+        have_positions = found;
+        if (!found) // unsorted or not in the pattern: deal.II's add()
+          {
+            matrix->add(local.dofs[i], n, local.dofs.data(), local_row);
+            continue;
+          }
+        for (unsigned int t = 0; t < n; ++t)
+          values[row_positions[t]] += local_row[column_order[t]];
+      }
   }
 
 
@@ -279,6 +355,7 @@ namespace pg
               ScratchHolder                                   &scratch,
               LocalSystem                                     &local) {
             local.dofs.clear();
+            local.failure.clear();
             try
               {
                 local.with_matrix = with_matrix;
@@ -297,10 +374,10 @@ namespace pg
                                 with_matrix ? &local.matrix : nullptr))
                   {
                     local.dofs.clear();
-                    record_failure(
+                    local.failure =
                       non_finite_message(group.element_name(*it),
                                          group.element_position(*it),
-                                         group.non_finite_hint()));
+                                         group.non_finite_hint());
                   }
               }
             catch (const std::exception &e)
@@ -312,10 +389,15 @@ namespace pg
                 where << "In " << group.element_name(*it) << " at ("
                       << group.element_position(*it)
                       << "): " << user_message(e);
-                record_failure(where.str());
+                local.failure = where.str();
               }
           },
-          [this](const LocalSystem &local) { distribute(local); },
+          [this](const LocalSystem &local) {
+            // in element order: the first failing element is reported
+            if (!local.failure.empty())
+              record_failure(local.failure);
+            distribute(local);
+          },
           ScratchHolder(group.create_scratch()),
           LocalSystem());
         if (with_matrix)

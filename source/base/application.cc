@@ -17,7 +17,9 @@ namespace pg
     const std::function<void(ParameterHandler &)>                    &declare,
     const std::function<int(const std::vector<std::string> &, bool)> &run)
   {
-    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    // threads: all cores not taken by other MPI ranks of the node, at most
+    // DEAL_II_NUM_THREADS (deal.II's rule)
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv);
     const bool root  = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     const auto abort = []() {
       if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)

@@ -136,15 +136,12 @@ namespace pg
         try
           {
             family_elements->initialize(needed);
-            for (unsigned int f = 0; f < owned_families.size(); ++f)
-              family_elements->build(owned_families[f], family_tables[f]);
+            family_elements->build(owned_families, family_tables);
             if (stabilisation_elements)
               {
-                stabilisation_tables.resize(owned_families.size());
                 stabilisation_elements->initialize(needed);
-                for (unsigned int f = 0; f < owned_families.size(); ++f)
-                  stabilisation_elements->build(owned_families[f],
-                                                stabilisation_tables[f]);
+                stabilisation_elements->build(owned_families,
+                                              stabilisation_tables);
               }
           }
         catch (const ExcSingularFamily &)

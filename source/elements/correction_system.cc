@@ -577,8 +577,7 @@ namespace pg
     system.reinit(particles, families, elements, owned_families, owned_dofs);
     CorrectionFactors<dim> factors = system.solve(unit_stress);
     elements.set_correction_factors(factors.alpha, factors.second_order_alpha);
-    for (unsigned int f = 0; f < owned_families.size(); ++f)
-      elements.build(owned_families[f], tables[f]);
+    elements.build(owned_families, tables);
     return factors;
   }
 

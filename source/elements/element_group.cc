@@ -18,6 +18,18 @@ namespace pg
 
   template <int dim>
   void
+  ElementGroup<dim>::add_group_sparsity(
+    const AffineConstraints<double> &constraints,
+    DynamicSparsityPattern          &sparsity) const
+  {
+    for (unsigned int e = 0; e < n_elements(); ++e)
+      add_sparsity(e, constraints, sparsity);
+  }
+
+
+
+  template <int dim>
+  void
   ElementGroup<dim>::keep_condensed_field_iterates()
   {
     condensed_iterates.assign(n_elements(), CondensedFieldIterate());

@@ -1,4 +1,5 @@
 #include <pg/base/exceptions.h>
+#include <pg/base/parallel_for.h>
 #include <pg/elements/family_elements.h>
 #include <pg/shape_functions/correction_functions.h>
 
@@ -81,12 +82,13 @@ namespace pg
       return needed.empty() || needed[k];
     };
     master.assign(families.n_families(), {});
-    for (unsigned int k = 0; k < families.n_families(); ++k)
+    parallel_for_each_index(families.n_families(), [&](const unsigned int k) {
       if (is_needed(k))
         {
           checked_gradients(k, geometry(k), 0, master[k]);
           ShapeFunctions::make_effective(master[k]);
         }
+    });
     // PBG tests with its trial functions: no copy (memory, all families)
     master_test.clear();
     if (formulation.method != FormulationCode::Method::pbg)
@@ -96,9 +98,13 @@ namespace pg
     if (formulation.variational_consistency)
       {
         phi.resize(families.n_families());
-        for (unsigned int k = 0; k < families.n_families(); ++k)
-          if (is_needed(k))
-            checked_correction_function(k, geometry(k), phi[k]);
+        parallel_for_each_index(families.n_families(),
+                                [&](const unsigned int k) {
+                                  if (is_needed(k))
+                                    checked_correction_function(k,
+                                                                geometry(k),
+                                                                phi[k]);
+                                });
       }
   }
 
@@ -345,6 +351,8 @@ namespace pg
     if (formulation.method == Method::pbg)
       {
         table.reinit(n, true);
+        table.trial.reserve(
+          (formulation.points == FormulationCode::Points::u1 ? 1 : n) * n);
         double family_volume = 0;
         for (const double v : geom.volumes)
           family_volume += v;
@@ -367,6 +375,7 @@ namespace pg
              formulation.method == Method::ppg2,
            ExcInternalError());
     table.reinit(n, false);
+    table.trial.reserve((n - 1) * n);
     for (unsigned int j = 1; j < n; ++j)
       {
         trial_at(j);
@@ -391,6 +400,19 @@ namespace pg
             table.add_test_vector(0, -t);
           }
       }
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyElements<dim>::build(const std::vector<unsigned int>   &ks,
+                             std::vector<QuadratureTable<dim>> &tables) const
+  {
+    tables.resize(ks.size());
+    parallel_for_each_index(ks.size(), [&](const unsigned int f) {
+      build(ks[f], tables[f]);
+    });
   }
 
 

@@ -185,6 +185,63 @@ namespace pg
 
 
   template <int dim>
+  void
+  FamilyGroup<dim>::add_group_sparsity(
+    const AffineConstraints<double> &constraints,
+    DynamicSparsityPattern          &sparsity) const
+  {
+    // the owned families that contain each particle, and whether a member
+    // DoF has a constraint with entries (keep_constrained_dofs = true adds
+    // nothing else for the others: the pattern is then the cliques)
+    const unsigned int n_particles = this->particles.n_particles();
+    std::vector<std::vector<unsigned int>> containing(n_particles);
+    for (unsigned int e = 0; e < this->n_elements(); ++e)
+      for (const unsigned int i :
+           this->families.members(this->owned_families[e]))
+        {
+          containing[i].push_back(this->owned_families[e]);
+          for (unsigned int c = 0; c < dim; ++c)
+            if (const auto *entries =
+                  constraints.get_constraint_entries(this->particles.dof(i, c));
+                entries != nullptr && !entries->empty())
+              {
+                ElementGroup<dim>::add_group_sparsity(constraints, sparsity);
+                return;
+              }
+        }
+
+    std::vector<unsigned int>            last_row(n_particles,
+                                       numbers::invalid_unsigned_int);
+    std::vector<unsigned int>            coupled;
+    std::vector<types::global_dof_index> columns;
+    for (unsigned int i = 0; i < n_particles; ++i)
+      {
+        if (containing[i].empty())
+          continue;
+        coupled.clear();
+        for (const unsigned int k : containing[i])
+          for (const unsigned int j : this->families.members(k))
+            if (last_row[j] != i)
+              {
+                last_row[j] = i;
+                coupled.push_back(j);
+              }
+        columns.clear();
+        for (const unsigned int j : coupled)
+          for (unsigned int c = 0; c < dim; ++c)
+            columns.push_back(this->particles.dof(j, c));
+        std::sort(columns.begin(), columns.end());
+        for (unsigned int c = 0; c < dim; ++c)
+          sparsity.add_entries(this->particles.dof(i, c),
+                               columns.begin(),
+                               columns.end(),
+                               true);
+      }
+  }
+
+
+
+  template <int dim>
   unsigned int
   FamilyGroup<dim>::n_evaluation_points(const unsigned int e) const
   {

@@ -3,6 +3,8 @@
 #include <pg/postprocess/postprocessors.h>
 #include <pg/problem.h>
 
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <fstream>
@@ -84,6 +86,10 @@ namespace pg
           std::ofstream timing(dir + "timing.txt");
           for (const auto &[name, seconds] : summary.timing)
             timing << std::left << std::setw(16) << name << seconds << " s\n";
+          timing << std::left << std::setw(16) << "threads"
+                 << MultithreadInfo::n_threads() << " per MPI rank, "
+                 << Utilities::MPI::n_mpi_processes(view.mpi_communicator)
+                 << " ranks\n";
         }
       if (!prm.output.vtu)
         return;

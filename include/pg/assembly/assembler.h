@@ -124,6 +124,18 @@ namespace pg
                        const std::string &hint);
 
   private:
+    /**
+     * Add local.matrix (no constrained DoF) into the matrix: for each row,
+     * the positions of the element's columns in the row's sorted column
+     * list are found by one merge walk (reused for the next row of the same
+     * column list), and the values are added in place. Epetra's
+     * SumIntoGlobalValues does a binary search per entry, which on
+     * Peridigm's tensile bar (189 x 189 entries per family) took half of
+     * the assembly. Rows this rank does not own go through deal.II's add().
+     */
+    void
+    add_to_matrix(const LocalSystem &local);
+
     const AffineConstraints<double>       &constraints;
     const std::vector<ElementGroup<dim> *> groups;
     std::vector<double>                    seconds;
@@ -148,6 +160,10 @@ namespace pg
      * sums in the same order).
      */
     types::global_dof_index range_first = 0, range_size = 0;
+    /** Work space of add_to_matrix() (the copier's thread only). */
+    std::vector<int>          local_columns;
+    std::vector<unsigned int> column_order;
+    std::vector<int>          row_positions;
   };
 } // namespace pg
 

@@ -52,6 +52,12 @@ namespace pg
     /** d residual / d u (filled only if with_matrix). */
     FullMatrix<double> matrix;
     bool               with_matrix = true;
+    /**
+     * Why the element could not be assembled (set by the Assembler's
+     * worker, reported by its copier in element order, so that the message
+     * names the same element whatever the number of threads).
+     */
+    std::string failure;
   };
 
   /**
@@ -91,6 +97,15 @@ namespace pg
     add_sparsity(const unsigned int               e,
                  const AffineConstraints<double> &constraints,
                  DynamicSparsityPattern          &sparsity) const;
+
+    /**
+     * The couplings of all elements of the group: by default add_sparsity()
+     * of each. A group may add them row by row instead, which gives the
+     * same pattern faster.
+     */
+    virtual void
+    add_group_sparsity(const AffineConstraints<double> &constraints,
+                       DynamicSparsityPattern          &sparsity) const;
 
     /** Evaluation points of element @p e (the keys of its point history). */
     virtual unsigned int

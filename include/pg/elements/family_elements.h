@@ -70,6 +70,15 @@ namespace pg
     build(const unsigned int k, QuadratureTable<dim> &table) const;
 
     /**
+     * build() of every family in @p ks into @p tables (resized to
+     * ks.size()), on all threads. Throws the exception of the first family
+     * in @p ks that fails, as a serial loop would.
+     */
+    void
+    build(const std::vector<unsigned int>   &ks,
+          std::vector<QuadratureTable<dim>> &tables) const;
+
+    /**
      * Effective trial gradients of family @p k at its master, one per
      * member: F^{kk} = sum_b x^b (x) B^{kkb}.
      */
