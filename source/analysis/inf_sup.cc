@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pg
 {
@@ -218,7 +219,23 @@ namespace pg
           const types::blas_int size = n;
           types::blas_int       info = 0;
           potrf(&LAPACKSupport::L, &size, cholesky.data(), &size, &info);
-          AssertThrow(info == 0,
+          // A singular S (a free body: the constants are in its kernel)
+          // may pass the factorisation with a round-off pivot, or fail with
+          // a negative one: also refuse pivots below 1e-10 of S's largest
+          // diagonal entry.
+          double largest_diagonal = 0, smallest_pivot = 0;
+          if (info == 0)
+            {
+              smallest_pivot = std::numeric_limits<double>::max();
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const double l =
+                    cholesky[static_cast<std::size_t>(i) * n + i];
+                  largest_diagonal = std::max(largest_diagonal, s(i, i));
+                  smallest_pivot   = std::min(smallest_pivot, l * l);
+                }
+            }
+          AssertThrow(info == 0 && smallest_pivot > 1e-10 * largest_diagonal,
                       ExcBadParameter(
                         "Boundary conditions/Dirichlet",
                         "(as given)",
