@@ -138,6 +138,7 @@ namespace pg
     }
 
 
+
     /**
      * The Bubnov-Galerkin tangent when every point has the same material
      * tangent A (a linear elastic material; any material at F = I):
@@ -373,13 +374,16 @@ namespace pg
               }
           }
       }
-    if (dense_tangent && table.n_points() > 0 && uniform_tangent)
-      uniform_bubnov_galerkin_tangent(table, first_tangent, *tangent);
-    else if (dense_tangent && table.n_points() > 0)
-      bubnov_galerkin_tangent(table,
-                              weighted_tangents,
-                              material.tangent_has_major_symmetry(),
-                              *tangent);
+    if (dense_tangent && table.n_points() > 0)
+      {
+        if (uniform_tangent)
+          uniform_bubnov_galerkin_tangent(table, first_tangent, *tangent);
+        else
+          bubnov_galerkin_tangent(table,
+                                  weighted_tangents,
+                                  material.tangent_has_major_symmetry(),
+                                  *tangent);
+      }
   }
 
 

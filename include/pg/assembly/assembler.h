@@ -128,10 +128,11 @@ namespace pg
      * Add local.matrix (no constrained DoF) into the matrix: for each row,
      * the positions of the element's columns in the row's sorted column
      * list are found by one merge walk (reused for the next row of the same
-     * column list), and the values are added in place. Epetra's
-     * SumIntoGlobalValues does a binary search per entry, which on
-     * Peridigm's tensile bar (189 x 189 entries per family) took half of
-     * the assembly. Rows this rank does not own go through deal.II's add().
+     * column list), and the values are added in place, instead of
+     * Epetra's binary search per entry in SumIntoGlobalValues (on
+     * Peridigm's tensile bar, 189 x 189 entries per family: 6.8 % of the
+     * run before, this walk 10 % of a run half as long). Rows this rank
+     * does not own go through deal.II's add().
      */
     void
     add_to_matrix(const LocalSystem &local);

@@ -141,10 +141,10 @@ namespace pg
     /**
      * Every family couples all DoFs of its members. Row by row: the row of
      * particle i gets the members of every owned family that contains i,
-     * once (a family of 63 members adds 189^2 entries one by one, which
-     * was 80 % of the set-up on Peridigm's tensile bar). Falls back to the
-     * element loop if a member's DoF is constrained to other DoFs (a
-     * hanging node), whose couplings AffineConstraints adds.
+     * once, instead of each family's 189^2 entries one by one (set-up on
+     * Peridigm's tensile bar, 63 members per family: 8.5 s -> 4.1 s).
+     * Falls back to the element loop if a member's DoF is constrained to
+     * other DoFs (a hanging node), whose couplings AffineConstraints adds.
      */
     void
     add_group_sparsity(const AffineConstraints<double> &constraints,
