@@ -96,6 +96,11 @@ namespace pg
       unsigned int n_assemblies = 0, n_solves = 0;
       /** Krylov iterations summed over the Newton solves (cg, gmres). */
       unsigned int linear_iterations = 0;
+      /**
+       * ML hierarchies built for them (fewer than n_solves with 'Reuse
+       * AMG'; counted from the start of this run, also after a restart).
+       */
+      unsigned int amg_builds = 0;
       double       fe_seconds = 0, family_seconds = 0;
       double       fe_entries = 0, family_entries = 0;
       double       fe_flops = 0, family_flops = 0;

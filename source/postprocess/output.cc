@@ -380,6 +380,7 @@ namespace pg
     out << "  \"assembly_cost\": {\"n_assemblies\": " << c.n_assemblies
         << ", \"n_solves\": " << c.n_solves
         << ", \"linear_iterations\": " << c.linear_iterations
+        << ", \"amg_builds\": " << c.amg_builds
         << ", \"fe_seconds\": " << json_number(c.fe_seconds)
         << ", \"family_seconds\": " << json_number(c.family_seconds)
         << ", \"fe_entries\": " << json_number(c.fe_entries)

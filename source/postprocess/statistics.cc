@@ -46,6 +46,11 @@ namespace pg
     {
       *view.pcout << "  total Newton iterations: " << summary.newton_iterations
                   << std::endl;
+      const auto &cost = summary.assembly_cost;
+      if (cost.amg_builds > 0)
+        *view.pcout << "  linear solves: " << cost.n_solves << " with "
+                    << cost.linear_iterations << " Krylov iterations and "
+                    << cost.amg_builds << " ML hierarchies" << std::endl;
     }
 
 

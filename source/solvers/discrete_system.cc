@@ -200,6 +200,7 @@ namespace pg
                                                owned_dofs,
                                                comm,
                                                relevant_dofs);
+    amg_cache.clear();
     matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
     summary.matrix_nonzeros = matrix.n_nonzero_elements();
     rhs.reinit(owned_dofs, comm);
@@ -555,7 +556,8 @@ namespace pg
                               discretization.dof_handler,
                               matrix,
                               update,
-                              rhs);
+                              rhs,
+                              &amg_cache);
       }
     catch (const SolverControl::NoConvergence &e)
       {
@@ -566,6 +568,7 @@ namespace pg
       }
     time_solve += timer.wall_time();
     ++summary.assembly_cost.n_solves;
+    summary.assembly_cost.amg_builds = amg_cache.n_builds;
     zero_constraints.distribute(update);
     energy = update * rhs;
     solution_owned += update;

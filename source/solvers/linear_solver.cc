@@ -184,7 +184,8 @@ namespace pg
                       const DoFHandler<dim>             &dof_handler,
                       const LinearAlgebra::SparseMatrix &matrix,
                       LinearAlgebra::Vector             &solution,
-                      const LinearAlgebra::Vector       &rhs)
+                      const LinearAlgebra::Vector       &rhs,
+                      AMGCache                          *cache)
   {
     if (parameters.type == "direct")
       {
@@ -202,55 +203,112 @@ namespace pg
         return 0;
       }
 
-    TrilinosWrappers::PreconditionAMG                 amg;
-    TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-    std::vector<std::vector<bool>>                    constant_modes;
-    DoFTools::extract_constant_modes(dof_handler,
-                                     ComponentMask(),
-                                     constant_modes);
-    amg_data.constant_modes  = constant_modes;
-    amg_data.elliptic        = (parameters.type == "cg");
-    amg_data.smoother_sweeps = 2;
-    // deal.II's ML parameters, then the rigid body modes as the null
-    // space, then the user's 'AMG parameters'
-    Teuchos::ParameterList              ml_parameters;
-    std::unique_ptr<Epetra_MultiVector> translations;
-    amg_data.set_parameters(ml_parameters, translations, matrix);
-    std::unique_ptr<Epetra_MultiVector> modes;
-    if (parameters.near_null_space == "rigid body modes")
-      {
-        modes = rigid_body_modes(dof_handler,
-                                 matrix.trilinos_matrix().RowMatrixRowMap());
-        ml_parameters.set("null space: type", "pre-computed");
-        ml_parameters.set("null space: dimension", modes->NumVectors());
-        ml_parameters.set("null space: vectors", modes->Values());
-      }
-    for (const auto &[name, value] : parameters.amg_parameters)
-      set_ml_parameter(ml_parameters, name, value);
-    amg.initialize(matrix, ml_parameters);
+    // a hierarchy to keep, or this solve's own
+    AMGCache  own;
+    AMGCache &amg = (cache != nullptr && parameters.reuse_amg) ? *cache : own;
+    if (amg.amg != nullptr && amg.matrix != &matrix)
+      amg.clear();
+    const auto build = [&]() {
+      amg.clear();
+      amg.amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
+      std::vector<std::vector<bool>>                    constant_modes;
+      DoFTools::extract_constant_modes(dof_handler,
+                                       ComponentMask(),
+                                       constant_modes);
+      amg_data.constant_modes  = constant_modes;
+      amg_data.elliptic        = (parameters.type == "cg");
+      amg_data.smoother_sweeps = 2;
+      // deal.II's ML parameters, then the rigid body modes as the null
+      // space, then the user's 'AMG parameters'
+      Teuchos::ParameterList              ml_parameters;
+      std::unique_ptr<Epetra_MultiVector> translations;
+      amg_data.set_parameters(ml_parameters, translations, matrix);
+      // ML copies the null space in its set-up (deal.II's own
+      // PreconditionAMG::initialize() frees its modes after it, too)
+      std::unique_ptr<Epetra_MultiVector> modes;
+      if (parameters.near_null_space == "rigid body modes")
+        {
+          modes = rigid_body_modes(dof_handler,
+                                   matrix.trilinos_matrix().RowMatrixRowMap());
+          ml_parameters.set("null space: type", "pre-computed");
+          ml_parameters.set("null space: dimension", modes->NumVectors());
+          ml_parameters.set("null space: vectors", modes->Values());
+        }
+      for (const auto &[name, value] : parameters.amg_parameters)
+        set_ml_parameter(ml_parameters, name, value);
+      amg.amg->initialize(matrix, ml_parameters);
+      amg.matrix = &matrix;
+      ++amg.n_builds;
+      if (cache != nullptr && &amg != cache)
+        ++cache->n_builds;
+    };
 
-    SolverControl control(std::max<unsigned int>(1000, rhs.size()),
-                          parameters.tolerance * rhs.l2_norm(),
-                          false,
-                          false);
-    if (parameters.type == "cg")
+    const auto krylov = [&]() {
+      SolverControl control(std::max<unsigned int>(1000, rhs.size()),
+                            parameters.tolerance * rhs.l2_norm(),
+                            false,
+                            false);
+      if (parameters.type == "cg")
+        {
+          SolverCG<LinearAlgebra::Vector> cg(control);
+          cg.solve(matrix, solution, rhs, *amg.amg);
+        }
+      else
+        {
+          // right preconditioning: the stopping test sees the true residual
+          // (with left preconditioning it sees the AMG-preconditioned one,
+          // and Newton then needs extra steps on linear problems)
+          SolverGMRES<LinearAlgebra::Vector> gmres(
+            control,
+            SolverGMRES<LinearAlgebra::Vector>::AdditionalData(
+              100,
+              /*right_preconditioning=*/true));
+          gmres.solve(matrix, solution, rhs, *amg.amg);
+        }
+      return control.last_step();
+    };
+
+    if (amg.amg == nullptr)
       {
-        SolverCG<LinearAlgebra::Vector> cg(control);
-        cg.solve(matrix, solution, rhs, amg);
+        build();
+        amg.first_iterations = krylov();
+        return amg.first_iterations;
       }
-    else
+    // an old hierarchy: on failure, a new one for this solve; on slow
+    // convergence, a new one for the next
+    const LinearAlgebra::Vector start = solution;
+    try
       {
-        // right preconditioning: the stopping test sees the true residual
-        // (with left preconditioning it sees the AMG-preconditioned one,
-        // and Newton then needs extra steps on linear problems)
-        SolverGMRES<LinearAlgebra::Vector> gmres(
-          control,
-          SolverGMRES<LinearAlgebra::Vector>::AdditionalData(
-            100,
-            /*right_preconditioning=*/true));
-        gmres.solve(matrix, solution, rhs, amg);
+        const unsigned int iterations = krylov();
+        if (2 * iterations > 3 * amg.first_iterations + 10)
+          amg.clear();
+        return iterations;
       }
-    return control.last_step();
+    catch (const SolverControl::NoConvergence &failure)
+      {
+        solution = start;
+        build();
+        amg.first_iterations = krylov();
+        return failure.last_step + amg.first_iterations;
+      }
+  }
+
+
+
+  AMGCache::AMGCache() = default;
+
+
+
+  AMGCache::~AMGCache() = default;
+
+
+
+  void
+  AMGCache::clear()
+  {
+    amg.reset();
+    matrix = nullptr;
   }
 
 
@@ -391,11 +449,13 @@ namespace pg
                          const DoFHandler<2> &,
                          const LinearAlgebra::SparseMatrix &,
                          LinearAlgebra::Vector &,
-                         const LinearAlgebra::Vector &);
+                         const LinearAlgebra::Vector &,
+                         AMGCache *);
   template unsigned int
   solve_linear_system<3>(const Parameters::LinearSolver &,
                          const DoFHandler<3> &,
                          const LinearAlgebra::SparseMatrix &,
                          LinearAlgebra::Vector &,
-                         const LinearAlgebra::Vector &);
+                         const LinearAlgebra::Vector &,
+                         AMGCache *);
 } // namespace pg

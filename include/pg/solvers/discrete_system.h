@@ -15,6 +15,7 @@
 #include <pg/elements/q1_cell_group.h>
 #include <pg/history/quadrature_point_history.h>
 #include <pg/materials/material.h>
+#include <pg/solvers/linear_solver.h>
 #include <pg/solvers/mechanical_system.h>
 #include <pg/solvers/newton_solver.h>
 
@@ -287,6 +288,8 @@ namespace pg
 
     AffineConstraints<double>   constraints, zero_constraints;
     LinearAlgebra::SparseMatrix matrix;
+    /** ML's hierarchy of the Newton solves ('Reuse AMG'), built from matrix. */
+    AMGCache amg_cache;
     /**
      * solution is ghosted over the relevant DoFs (what the assembly and the
      * postprocessors read); solution_owned holds the owned DoFs that the

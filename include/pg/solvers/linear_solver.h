@@ -7,11 +7,17 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <memory>
 #include <string>
 
 namespace Teuchos
 {
   class ParameterList;
+}
+
+namespace dealii::TrilinosWrappers
+{
+  class PreconditionAMG;
 }
 
 namespace pg
@@ -28,13 +34,21 @@ namespace pg
                    const std::string      &name,
                    const std::string      &value);
 
+  class AMGCache;
+
   /**
    * Solve K du = b with the solver of subsection 'Linear solver': Amesos
    * MUMPS (direct; KLU if Trilinos was built without MUMPS), or CG / GMRES
-   * preconditioned by ML algebraic multigrid whose near-null space is the
-   * rigid translations. Returns the number of Krylov iterations (0 for the
-   * direct solver). Throws
+   * preconditioned by ML algebraic multigrid with the near-null space of
+   * 'AMG near-null space' (the rigid body modes by default). Returns the number
+   * of Krylov iterations (0 for the direct solver). Throws
    * SolverControl::NoConvergence if the Krylov method does not converge.
+   *
+   * With @p cache and 'Reuse AMG', a hierarchy in @p cache built from the
+   * same matrix object is applied to @p matrix's current values; it is
+   * rebuilt when the solve does not converge (the solve is repeated) or
+   * needs more than 1.5 times (plus 5) the iterations of its first solve
+   * (for the next one).
    */
   template <int dim>
   unsigned int
@@ -42,7 +56,45 @@ namespace pg
                       const DoFHandler<dim>             &dof_handler,
                       const LinearAlgebra::SparseMatrix &matrix,
                       LinearAlgebra::Vector             &solution,
-                      const LinearAlgebra::Vector       &rhs);
+                      const LinearAlgebra::Vector       &rhs,
+                      AMGCache                          *cache = nullptr);
+
+  /**
+   * An ML hierarchy kept from one solve_linear_system() to the next
+   * ('Linear solver/Reuse AMG'). ML's finest level wraps the Epetra matrix
+   * it was built from without copying it (an old hierarchy smooths with
+   * the matrix's current values), so the cache must be cleared (or destroyed)
+   * before that matrix is reinitialized or destroyed.
+   */
+  class AMGCache
+  {
+  public:
+    AMGCache();
+    ~AMGCache();
+
+    /** Forget the hierarchy: the next solve builds a new one. */
+    void
+    clear();
+
+    /** Hierarchies built since construction (for the summary). */
+    unsigned int n_builds = 0;
+
+  private:
+    template <int dim>
+    friend unsigned int
+    solve_linear_system(const Parameters::LinearSolver &,
+                        const DoFHandler<dim> &,
+                        const LinearAlgebra::SparseMatrix &,
+                        LinearAlgebra::Vector &,
+                        const LinearAlgebra::Vector &,
+                        AMGCache *);
+
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    /** The matrix the hierarchy was built from. */
+    const LinearAlgebra::SparseMatrix *matrix = nullptr;
+    /** Krylov iterations of the first solve with the hierarchy. */
+    unsigned int first_iterations = 0;
+  };
 
   /**
    * Solve the non-symmetric A x = b by restarted GMRES (200 vectors, right

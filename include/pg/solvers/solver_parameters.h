@@ -69,6 +69,8 @@ namespace pg
       double      tolerance;
       /** ML's near-null space: rigid body modes | translations */
       std::string near_null_space;
+      /** Keep ML's hierarchy between solves (entry 'Reuse AMG'). */
+      bool reuse_amg;
       /** The VC correction system: automatic | direct */
       std::string vc_solver;
       /**
