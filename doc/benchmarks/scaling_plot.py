@@ -33,6 +33,15 @@ for line in open(table):
         "kB": float(cells[18]),
     })
 
+
+def finish(axis, ylabel):
+    """Label, grid and legend of one panel."""
+    axis.set_xlabel("DoFs")
+    axis.set_ylabel(ylabel)
+    axis.grid(True, which="both", alpha=0.3)
+    axis.legend(fontsize=7)
+
+
 fig, (left, right) = plt.subplots(1, 2, figsize=(13, 5))
 for label, rows in sorted(series.items()):
     rows.sort(key=lambda r: r["dofs"])
@@ -41,31 +50,18 @@ for label, rows in sorted(series.items()):
     ratio = [(r["dofs"], r["ratio"]) for r in rows if r["ratio"] is not None]
     if ratio:
         right.semilogx(*zip(*ratio), "o-", label=label)
-left.set_xlabel("DoFs")
-left.set_ylabel("wall s per Newton step (assembly + solve)")
-left.grid(True, which="both", alpha=0.3)
-left.legend(fontsize=7)
 right.axhline(1.6, color="k", ls="--", lw=1, label="issue 14 target 1.6")
-right.set_xlabel("DoFs")
-right.set_ylabel("s per Newton step / FEM's at the same size")
-right.grid(True, which="both", alpha=0.3)
-right.legend(fontsize=7)
+finish(left, "wall s per Newton step (assembly + solve)")
+finish(right, "s per Newton step / FEM's at the same size")
 fig.tight_layout()
 fig.savefig(prefix + "_time.png", dpi=110)
 
 fig, (left, right) = plt.subplots(1, 2, figsize=(13, 5))
 for label, rows in sorted(series.items()):
-    rows.sort(key=lambda r: r["dofs"])
     dofs = [r["dofs"] for r in rows]
     left.semilogx(dofs, [r["kB"] for r in rows], "o-", label=label)
     right.semilogx(dofs, [r["its"] for r in rows], "o-", label=label)
-left.set_xlabel("DoFs")
-left.set_ylabel("peak memory, kB per DoF (all ranks)")
-left.grid(True, which="both", alpha=0.3)
-left.legend(fontsize=7)
-right.set_xlabel("DoFs")
-right.set_ylabel("Krylov iterations per Newton solve")
-right.grid(True, which="both", alpha=0.3)
-right.legend(fontsize=7)
+finish(left, "peak memory, kB per DoF (all ranks)")
+finish(right, "Krylov iterations per Newton solve")
 fig.tight_layout()
 fig.savefig(prefix + "_memory.png", dpi=110)

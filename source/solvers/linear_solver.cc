@@ -203,12 +203,12 @@ namespace pg
         return 0;
       }
 
-    // a hierarchy to keep, or this solve's own
+    // a hierarchy to keep, or this solve's own; builds are counted in the
+    // cache either way
     AMGCache  own;
     AMGCache &amg = (cache != nullptr && parameters.reuse_amg) ? *cache : own;
-    if (amg.amg != nullptr && amg.matrix != &matrix)
-      amg.clear();
-    const auto build = [&]() {
+    unsigned int &n_builds = (cache != nullptr ? *cache : own).n_builds;
+    const auto    build    = [&]() {
       amg.clear();
       amg.amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
       TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
@@ -239,9 +239,7 @@ namespace pg
         set_ml_parameter(ml_parameters, name, value);
       amg.amg->initialize(matrix, ml_parameters);
       amg.matrix = &matrix;
-      ++amg.n_builds;
-      if (cache != nullptr && &amg != cache)
-        ++cache->n_builds;
+      ++n_builds;
     };
 
     const auto krylov = [&]() {
@@ -269,7 +267,7 @@ namespace pg
       return control.last_step();
     };
 
-    if (amg.amg == nullptr)
+    if (amg.amg == nullptr || amg.matrix != &matrix)
       {
         build();
         amg.first_iterations = krylov();
