@@ -24,7 +24,9 @@
 # assembly s and solve s per Newton step, s per Newton step, its ratio to
 # FEM, wall s, peak MB per rank, kB per DoF (all ranks), tip displacement.
 # PG_REUSE_AMG sets 'Linear solver/Reuse AMG' (default true).
-# Each run gets at most PG_TIMEOUT seconds (default 1800).
+# Each run gets at most PG_TIMEOUT seconds (default 1800). A failed run
+# prints its row with the message's first line (not the error box's
+# dashes). (The runs read no stdin: mpirun would swallow the model list.)
 set -e
 BUILD=$1
 RANKS=${2:-1}
@@ -127,8 +129,8 @@ END
     # shellcheck disable=SC2016
     if ! timeout "$TIMEOUT" $RUN sh -c \
       'exec /usr/bin/time -f %M -o "$0.$$" "$1" "$2"' \
-      "$WORK/mem" "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1; then
-      echo "| $DIM-D | $formulation | $factor | $RANKS | $n | failed or over ${TIMEOUT} s: $(tail -1 "$WORK/log" | cut -c1-120) |"
+      "$WORK/mem" "$PG" "$WORK/case.prm" < /dev/null > "$WORK/log" 2>&1; then
+      echo "| $DIM-D | $formulation | $factor | $RANKS | $n | failed or over ${TIMEOUT} s: $(grep -v -e '^-*$' -e '^Exception' -e '^Aborting' "$WORK/log" | tail -1 | cut -c1-160) |"
       continue
     fi
     wall=$(echo "$start $(date +%s.%N)" | awk '{ printf "%.1f", $2 - $1 }')

@@ -1,6 +1,9 @@
 #include <pg/analysis/eigenmode_analysis.h>
 #include <pg/analysis/eigenmodes.h>
 
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/component_mask.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -20,8 +23,27 @@ namespace pg
       auto             &summary = access.summary;
       const std::string failure = access.system.assemble_residual(true);
       AssertThrow(failure.empty(), ExcMessage(failure));
+      // U2P1C, Unl+P1C, IUnlP0: the eigenvalues of the displacement
+      // stiffness, their nodal or family pressures eliminated
+      std::vector<bool> is_displacement;
+      if (access.formulation.n_nodal_fields() > 0)
+        {
+          const DoFHandler<dim> &dof_handler = *this->view().dof_handler;
+          ComponentMask displacement(dim + access.formulation.n_nodal_fields(),
+                                     false);
+          for (unsigned int c = 0; c < dim; ++c)
+            displacement.set(c, true);
+          const IndexSet u_dofs =
+            DoFTools::extract_dofs(dof_handler, displacement);
+          is_displacement.resize(dof_handler.n_dofs());
+          for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+            is_displacement[i] = u_dofs.is_element(i);
+        }
+      unsigned int              pressure_modes = 0;
       const std::vector<double> values =
-        dense_eigenvalues(access.system.tangent());
+        dense_eigenvalues(access.system.tangent(),
+                          is_displacement,
+                          &pressure_modes);
       summary.max_eigenvalue     = values.back();
       summary.n_zero_eigenvalues = 0;
       for (const double v : values)
@@ -34,6 +56,14 @@ namespace pg
       summary.converged = true;
 
       std::ostringstream line;
+      if (!is_displacement.empty())
+        line << "  eigenvalues of the displacement stiffness ("
+             << (access.formulation.incompressible() ?
+                   "on the incompressible displacements, " +
+                     std::to_string(pressure_modes) +
+                     " pressure modes without a constraint" :
+                   "nodal pressure and dilatation eliminated")
+             << ")\n";
       line << std::setprecision(4) << "  eigenvalues: max " << values.back()
            << ", below 1e-10 max: " << summary.n_zero_eigenvalues
            << "\n  smallest non-zero:";

@@ -420,7 +420,7 @@ namespace pg
                           "algebraic multigrid do not solve. Set 'Type = "
                           "direct'."));
           AssertThrow(
-            analysis.type == "static" && !time.dynamic(),
+            analysis.type != "inf-sup" && !time.dynamic(),
             ExcBadParameter(
               analysis.type != "static" ? "Analysis/Type" : "Time/Integrator",
               analysis.type != "static" ? analysis.type : time.integrator,
@@ -429,8 +429,8 @@ namespace pg
                    std::string("> (a global pressure per family)") :
                    std::string("> (nodal pressure and dilatation)")) +
                 " is available "
-                "for quasi-static load stepping only so far. Use "
-                "'Type = static' without an integrator, or the "
+                "for quasi-static load stepping and eigenmodes only so far. "
+                "Use 'Type = static' without an integrator, or the "
                 "condensed mixed formulation 'VCPBG V5sn UnlP0'" +
                 (analysis.type != "inf-sup" ?
                    std::string() :

@@ -145,11 +145,11 @@ namespace pg
       {
         std::ostringstream where, detail;
         where << "(" << particles.position(k) << ")";
-        detail << " for the WLS2 fit of the VC correction function V2/V4 "
-                  "(condition number "
+        detail << " for the fit of the VC correction function (condition "
+                  "number "
                << cond << " > " << maximum_condition_number
-               << "; the quadratic fit needs " << (dim == 2 ? 6 : 10)
-               << " neighbours not on one conic; or use V3/V5)";
+               << "; V2/V4 fit a quadratic (WLS2) and need at least "
+               << (dim == 2 ? 6 : 10) << " neighbours not on one conic)";
         AssertThrow(false,
                     ExcSingularFamily(k,
                                       where.str(),
