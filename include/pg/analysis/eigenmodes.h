@@ -4,7 +4,6 @@
 #include <pg/base/global.h>
 #include <pg/base/linear_algebra.h>
 
-#include <string>
 #include <vector>
 
 namespace pg
