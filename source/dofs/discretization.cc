@@ -7,7 +7,6 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/grid/grid_tools.h>
 
 namespace pg
 {
@@ -197,7 +196,7 @@ namespace pg
 
     // After the families: a ghost set can be the DoFs of their members.
     compute_relevant_dofs();
-    mesh_diameter = GridTools::diameter(triangulation);
+    mesh_diameter = Mesh::diameter(triangulation);
     time_setup += timer.wall_time();
   }
 

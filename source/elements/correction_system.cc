@@ -75,7 +75,9 @@ namespace pg
     , solver(solver)
   {
     Assert(formulation.variational_consistency, ExcInternalError());
-    Assert(solver == "automatic" || solver == "direct", ExcInternalError());
+    Assert(solver == "automatic" || solver == "ilu" || solver == "amg" ||
+             solver == "direct",
+           ExcInternalError());
   }
 
 
@@ -463,12 +465,13 @@ namespace pg
       }
     rhs.compress(VectorOperation::insert);
 
-    // Iterative (the default where the system is regular): GMRES with
-    // ILU(0) from alpha = 0. The matrix is one horizon wide and behaves
-    // like a discrete Laplacian (C^kk = -sum_q w Q^kq on the diagonal):
-    // 49 / 74 / 99 iterations at 8,019 / 24,843 / 56,355 DoFs (3-D
-    // cantilever, V5sn, 1.51 h), a VC set-up of 2.5 s where KLU took 147 s
-    // (doc/benchmarks/vc_solve.md).
+    // Iterative (the default where the system is regular): GMRES from
+    // alpha = 0, with ILU(0) on small systems and AMG on large ones
+    // (amg_from_rows). The matrix is one horizon wide and behaves like a
+    // discrete Laplacian per component (C^kk = -sum_q w Q^kq on the
+    // diagonal): the AMG's near-null space is the constant of each
+    // component. 3-D cantilever, V5sn, 1.51 h: a VC set-up of 2.5 s at
+    // 56,355 DoFs where KLU took 147 s (doc/benchmarks/vc_solve.md).
     //
     // The system is singular but consistent with FE coupling plus a free
     // surface: affine fields tangential on the surface give rows that do
@@ -489,19 +492,26 @@ namespace pg
     // blocks on the diagonal, on which ILU(0) breaks down: solved directly.
     const bool zero_diagonal = (formulation.correction_function ==
                                 FormulationCode::CorrectionFunction::v2);
-    factors.solver           = (solver == "direct" ? "direct" :
-                                singular      ? "direct (singular system)" :
-                                zero_diagonal ? "direct (V2: zero diagonal)" :
-                                                "iterative");
-    if (factors.solver == "iterative")
+    const bool use_amg =
+      solver == "amg" || (solver == "automatic" && matrix.m() >= amg_from_rows);
+    const bool iterative = solver != "direct" && !singular && !zero_diagonal;
+    factors.solver       = (solver == "direct" ? "direct" :
+                            singular           ? "direct (singular system)" :
+                            zero_diagonal      ? "direct (V2: zero diagonal)" :
+                            use_amg            ? "GMRES + AMG" :
+                                                 "GMRES + ILU(0)");
+    if (iterative)
       {
         try
           {
-            factors.solver_iterations = solve_by_ilu_gmres(matrix,
-                                                           solution,
-                                                           rhs,
-                                                           relative_tolerance,
-                                                           max_iterations);
+            factors.solver_iterations = solve_by_gmres(
+              matrix,
+              solution,
+              rhs,
+              use_amg ? GMRESPreconditioner::amg : GMRESPreconditioner::ilu,
+              use_amg ? component_modes() : std::vector<std::vector<bool>>(),
+              relative_tolerance,
+              max_iterations);
           }
         catch (const SolverControl::NoConvergence &failure)
           {
@@ -516,7 +526,7 @@ namespace pg
               << std::endl;
           }
       }
-    if (factors.solver != "iterative")
+    if (!iterative || factors.solver == "direct (fallback)")
       {
         static const bool  have_mumps  = Amesos().Query("Amesos_Mumps");
         const unsigned int corrections = solve_by_shifted_refinement(
@@ -549,6 +559,22 @@ namespace pg
                            "boundary option of 'Formulation' in subsection "
                            "'Discretization' (p, s or sn)."));
     return factors;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<bool>>
+  CorrectionSystem<dim>::component_modes() const
+  {
+    std::vector<std::vector<bool>> modes(
+      dim,
+      std::vector<bool>(owned_dofs.n_elements(), false));
+    for (unsigned int k = 0; k < particles->n_particles(); ++k)
+      for (unsigned int c = 0; c < dim; ++c)
+        if (owned_dofs.is_element(particles->dof(k, c)))
+          modes[c][owned_dofs.index_within_set(particles->dof(k, c))] = true;
+    return modes;
   }
 
 

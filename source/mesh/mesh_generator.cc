@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 #include <set>
@@ -411,7 +412,7 @@ namespace pg
         // create_triangulation_with_removed_cells() sets every boundary id
         // to 0: colorize the outer faces again (0: x = min, 1: x = max, ...)
         // and give the faces on the (closed) box id 2*dim.
-        const double tolerance = 1e-10 * GridTools::diameter(triangulation);
+        const double tolerance = 1e-10 * diameter(triangulation);
         for (const auto &cell : triangulation.active_cell_iterators())
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary())
@@ -486,6 +487,57 @@ namespace pg
 
 
     template <int dim>
+    double
+    diameter(const Triangulation<dim> &triangulation)
+    {
+      const std::vector<Point<dim>> &vertices = triangulation.get_vertices();
+      std::vector<bool>              on_boundary(vertices.size(), false);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            for (const unsigned int v : face->vertex_indices())
+              on_boundary[face->vertex_index(v)] = true;
+
+      std::vector<Point<dim>> points;
+      for (unsigned int v = 0; v < vertices.size(); ++v)
+        if (on_boundary[v])
+          points.push_back(vertices[v]);
+      if (points.size() < 2)
+        return 0;
+      Point<dim> lower = points[0], upper = points[0];
+      for (const Point<dim> &p : points)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] = std::min(lower[d], p[d]);
+            upper[d] = std::max(upper[d], p[d]);
+          }
+      // |p - q| <= |p - c(p)| for every q in the box, with c(p) the box
+      // corner farthest from p
+      std::vector<std::pair<double, unsigned int>> bound(points.size());
+      for (unsigned int i = 0; i < points.size(); ++i)
+        {
+          double square = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            square += std::pow(std::max(points[i][d] - lower[d],
+                                        upper[d] - points[i][d]),
+                               2);
+          bound[i] = {square, i};
+        }
+      std::sort(bound.begin(), bound.end(), std::greater<>());
+      double largest = 0;
+      for (const auto &[square_bound, i] : bound)
+        {
+          if (square_bound <= largest)
+            break;
+          for (const Point<dim> &q : points)
+            largest = std::max(largest, points[i].distance_square(q));
+        }
+      return std::sqrt(largest);
+    }
+
+
+
+    template <int dim>
     std::vector<bool>
     mark_meshfree_cells(const Parameters::Geometry &parameters,
                         const Triangulation<dim>   &triangulation)
@@ -532,6 +584,10 @@ namespace pg
                    Triangulation<3> &,
                    std::string *);
 
+    template double
+    diameter<2>(const Triangulation<2> &);
+    template double
+    diameter<3>(const Triangulation<3> &);
     template std::vector<bool>
     mark_meshfree_cells<2>(const Parameters::Geometry &,
                            const Triangulation<2> &);

@@ -127,9 +127,9 @@ namespace pg
     /** What create_mesh() did to a mesh file, for the banner. */
     std::string mesh_notes;
     /**
-     * GridTools::diameter() of the final mesh (O(boundary vertices^2), so
-     * computed once in reinit()): the scale of the geometric tolerances of
-     * the constraints, which dynamics rebuilds every step.
+     * Mesh::diameter() of the final mesh (computed once in reinit()): the
+     * scale of the geometric tolerances of the constraints, which dynamics
+     * rebuilds every step.
      */
     double mesh_diameter = 0;
 

@@ -32,9 +32,9 @@ namespace pg
      */
     double max_second_order_residual = 0;
     /**
-     * How the system was solved: "iterative", "direct", "direct (singular
-     * system)", "direct (V2: zero diagonal)" or "direct (fallback)" (GMRES
-     * did not converge).
+     * How the system was solved: "GMRES + ILU(0)", "GMRES + AMG", "direct",
+     * "direct (singular system)", "direct (V2: zero diagonal)" or "direct
+     * (fallback)" (GMRES did not converge).
      */
     std::string solver;
     /** GMRES iterations of the iterative solve (0 if solved directly). */
@@ -80,9 +80,11 @@ namespace pg
     /**
      * For the VC code @p formulation on the ranks of @p comm, solved by
      * @p solver ('VC solver' in subsection 'Linear solver'): "automatic"
-     * (GMRES with ILU(0) where the system is regular, the direct solver
-     * where it is singular, i.e. FE coupling plus a free surface, or where
-     * GMRES does not converge) or "direct".
+     * (GMRES where the system is regular, with ILU(0) below
+     * #amg_from_rows rows and ML AMG from there; the direct solver where
+     * it is singular, i.e. FE coupling plus a free surface, or where GMRES
+     * does not converge), "ilu" or "amg" (GMRES with that preconditioner
+     * where the system is regular) or "direct".
      */
     CorrectionSystem(const FormulationCode &formulation,
                      const MPI_Comm         comm,
@@ -92,6 +94,16 @@ namespace pg
     static constexpr double relative_tolerance = 1e-13;
     /** GMRES iterations before the direct solver takes over. */
     static constexpr unsigned int max_iterations = 2000;
+    /**
+     * 'VC solver = automatic' preconditions GMRES with AMG from this many
+     * rows on, with ILU(0) below. ILU(0)'s iterations grow like 1/h, AMG's
+     * slowly, but AMG's set-up costs more: on the 3-D cantilever (V5sn,
+     * 1.51 h) ILU(0) 0.99 / 5.2 / 20.9 s (99 / 154 / 241 iterations), AMG
+     * 1.10 / 4.3 / 12.5 s (32 / 43 / 53) at 56,355 / 181,875 / 421,443
+     * rows; on Peridigm's tensile bar (48,816 rows, 63 members per family)
+     * 3.3 s against 4.4 s (doc/benchmarks/vc_solve.md).
+     */
+    static constexpr unsigned int amg_from_rows = 100000;
 
     /**
      * Classify the rows, build the sparsity pattern from the correction
@@ -167,6 +179,13 @@ namespace pg
     /** matrix = R C on the equation rows, the constraint rows, identity. */
     void
     assemble_matrix();
+
+    /**
+     * The AMG's near-null space: one mask over the owned rows per
+     * component, true on the rows of that component of a particle.
+     */
+    std::vector<std::vector<bool>>
+    component_modes() const;
 
     FormulationCode formulation;
     const MPI_Comm  comm;

@@ -37,6 +37,20 @@ namespace pg
     std::vector<bool>
     mark_meshfree_cells(const Parameters::Geometry &parameters,
                         const Triangulation<dim>   &triangulation);
+
+    /**
+     * The largest distance between two boundary vertices of the mesh, the
+     * same number as GridTools::diameter(). That one loops over all vertex
+     * pairs (O(vertices^2): 16 s of a 28 s run at 263k vertices in 2-D);
+     * this one visits the boundary vertices in the order of their distance
+     * to the farthest corner of the bounding box (an upper bound of every
+     * distance from them) and stops when that bound falls below the largest
+     * distance found: on a box, only the corners are compared with all
+     * others.
+     */
+    template <int dim>
+    double
+    diameter(const Triangulation<dim> &triangulation);
   } // namespace Mesh
 } // namespace pg
 

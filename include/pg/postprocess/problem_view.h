@@ -116,7 +116,7 @@ namespace pg
       const std::vector<std::pair<CellIterator, Point<dim>>> *point_locations =
         nullptr;
       const std::vector<LineSampleLocation<dim>> *line_locations = nullptr;
-      /** GridTools::diameter() of the mesh, set in setup. */
+      /** Mesh::diameter() of the mesh, set in setup. */
       const double *mesh_diameter = nullptr;
 
       /** Wall times (s) of the phases and the timers, for summary.timing. */

@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace Teuchos
 {
@@ -97,19 +98,38 @@ namespace pg
   };
 
   /**
+   * The preconditioner of solve_by_gmres().
+   */
+  enum class GMRESPreconditioner
+  {
+    /** Ifpack's ILU(0), block Jacobi over the MPI ranks. */
+    ilu,
+    /**
+     * ML's non-symmetric smoothed aggregation (deal.II's `elliptic =
+     * false`: "NSSA") with two ILU(0) sweeps as smoother and the given
+     * constant modes as near-null space.
+     */
+    amg
+  };
+
+  /**
    * Solve the non-symmetric A x = b by restarted GMRES (200 vectors, right
-   * preconditioning, so the stopping test sees the true residual) with
-   * Ifpack's ILU(0) (block Jacobi over the MPI ranks), from x = 0, until
-   * |b - A x| <= @p tolerance |b|. Every row of A needs a nonzero diagonal.
-   * Returns the number of iterations; throws SolverControl::NoConvergence
-   * after @p max_iterations.
+   * preconditioning, so the stopping test sees the true residual) with the
+   * @p preconditioner, from x = 0, until |b - A x| <= @p tolerance |b|.
+   * Every row of A needs a nonzero diagonal. @p constant_modes (one mask
+   * over the locally owned rows per near-null vector, as
+   * PreconditionAMG::AdditionalData::constant_modes) are used by the AMG
+   * only. Returns the number of iterations; throws
+   * SolverControl::NoConvergence after @p max_iterations.
    */
   unsigned int
-  solve_by_ilu_gmres(const LinearAlgebra::SparseMatrix &matrix,
-                     LinearAlgebra::Vector             &solution,
-                     const LinearAlgebra::Vector       &rhs,
-                     const double                       tolerance,
-                     const unsigned int                 max_iterations);
+  solve_by_gmres(const LinearAlgebra::SparseMatrix    &matrix,
+                 LinearAlgebra::Vector                &solution,
+                 const LinearAlgebra::Vector          &rhs,
+                 const GMRESPreconditioner             preconditioner,
+                 const std::vector<std::vector<bool>> &constant_modes,
+                 const double                          tolerance,
+                 const unsigned int                    max_iterations);
 
   /**
    * Solve A x = b for a square @p matrix A that may be singular but whose
