@@ -17,73 +17,38 @@ SIZES=${2:-16 24 32 48}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 
-# json FILE KEY: the number after "KEY": in summary.json
-json() {
-  grep -o "\"$2\": [0-9.e+-]*" "$1" | head -1 | awk '{ print $2 }'
-}
+. "$(dirname "$0")/cantilever_case.sh"
 
 echo "| model | solver | n | DoFs | null space | solves | iterations/solve | solve s/solve | u_z tip |"
 echo "|---|---|---|---|---|---|---|---|---|"
 for n in $SIZES; do
-  m=$((n / 4))
   for model in "FEM:cg" "BCPBG Unl:cg" "VCBCPPG V3sn Unl:gmres" "coupled:gmres"; do
     formulation=${model%%:*}
     solver=${model##*:}
     region=""
     if [ "$formulation" = coupled ]; then
       formulation="VCBCPPG V3sn Unl"
-      region="  set Meshfree region = box 0, 0, 0 : 2, 1, 1"
+      region="subsection Geometry
+  set Meshfree region = box 0, 0, 0 : 2, 1, 1
+end"
     fi
     # PG beyond 32 x 8 x 8 costs minutes per run here: FEM only
     [ "$formulation" != FEM ] && [ "$n" -gt 32 ] && continue
     for nullspace in translations "rigid body modes"; do
-      cat > "$WORK/case.prm" <<END
-set Dimension = 3
-subsection Geometry
-  set Lower corner = 0, 0, 0
-  set Upper corner = 4, 1, 1
-  set Subdivisions = $n, $m, $m
-  set Distortion   = 0.25
-$region
-end
-subsection Discretization
-  set Formulation = $formulation
-end
-subsection Material
-  set Model           = neo-Hooke
-  set Young's modulus = 1000
-  set Poisson's ratio = 0.3
-end
-subsection Boundary conditions
-  set Dirichlet = 0: xyz
-  set Neumann   = 1
-  subsection Traction
-    set Function expression = 0; 0; -1*t
-  end
-end
-subsection Loading
-  set Load steps = 1
-end
-subsection Linear solver
-  set Type                = $solver
-  set Tolerance           = 1e-10
-  set AMG near-null space = $nullspace
-end
-subsection Output
-  set Directory = $WORK/out
-  set VTU       = false
-  set Points    = tip: 4, 0.5, 0.5
-end
-END
+      {
+        cantilever_prm 3 "$n" "$formulation" "$solver" "$WORK/out"
+        echo "$region"
+        printf 'subsection Linear solver\n  set AMG near-null space = %s\nend\n' "$nullspace"
+      } > "$WORK/case.prm"
       rm -rf "$WORK/out"
       if ! "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1; then
         echo "| $model | $solver | $n | - | $nullspace | failed: $(tail -1 "$WORK/log") |"
         continue
       fi
       s="$WORK/out/summary.json"
-      dofs=$(json "$s" n_dofs)
-      solves=$(json "$s" n_solves)
-      its=$(json "$s" linear_iterations)
+      dofs=$(summary_number "$s" n_dofs)
+      solves=$(summary_number "$s" n_solves)
+      its=$(summary_number "$s" linear_iterations)
       solve=$(grep -o '"solve": [0-9.e+-]*' "$s" | awk '{ print $2 }')
       tip=$(grep -o '"tip": \[[^]]*\]' "$s" | head -1 | tr -d '[],' |
         awk '{ printf "%.6g", $4 }')

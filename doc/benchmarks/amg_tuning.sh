@@ -21,10 +21,7 @@ SIZES=${2:-24 32}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 
-# json FILE KEY: the number after "KEY": in summary.json
-json() {
-  grep -o "\"$2\": [0-9.e+-]*" "$1" | head -1 | awk '{ print $2 }'
-}
+. "$(dirname "$0")/cantilever_case.sh"
 
 # name|AMG parameters
 VARIANTS="pg's default|
@@ -39,63 +36,31 @@ uncoupled aggregation|aggregation: type = Uncoupled"
 echo "| model | n | DoFs | ML variant | solves | iterations/solve | solve s/solve | u_z tip |"
 echo "|---|---|---|---|---|---|---|---|"
 for n in $SIZES; do
-  m=$((n / 4))
   for model in "FEM:cg" "BCPBG Unl:cg" "VCBCPPG V3sn Unl:gmres" "coupled:gmres"; do
     formulation=${model%%:*}
     solver=${model##*:}
     region=""
     if [ "$formulation" = coupled ]; then
       formulation="VCBCPPG V3sn Unl"
-      region="  set Meshfree region = box 0, 0, 0 : 2, 1, 1"
+      region="subsection Geometry
+  set Meshfree region = box 0, 0, 0 : 2, 1, 1
+end"
     fi
     echo "$VARIANTS" | while IFS='|' read -r variant amg; do
-      cat > "$WORK/case.prm" <<END
-set Dimension = 3
-subsection Geometry
-  set Lower corner = 0, 0, 0
-  set Upper corner = 4, 1, 1
-  set Subdivisions = $n, $m, $m
-  set Distortion   = 0.25
-$region
-end
-subsection Discretization
-  set Formulation = $formulation
-end
-subsection Material
-  set Model           = neo-Hooke
-  set Young's modulus = 1000
-  set Poisson's ratio = 0.3
-end
-subsection Boundary conditions
-  set Dirichlet = 0: xyz
-  set Neumann   = 1
-  subsection Traction
-    set Function expression = 0; 0; -1*t
-  end
-end
-subsection Loading
-  set Load steps = 1
-end
-subsection Linear solver
-  set Type           = $solver
-  set Tolerance      = 1e-10
-  set AMG parameters = $amg
-end
-subsection Output
-  set Directory = $WORK/out
-  set VTU       = false
-  set Points    = tip: 4, 0.5, 0.5
-end
-END
+      {
+        cantilever_prm 3 "$n" "$formulation" "$solver" "$WORK/out"
+        echo "$region"
+        printf 'subsection Linear solver\n  set AMG parameters = %s\nend\n' "$amg"
+      } > "$WORK/case.prm"
       rm -rf "$WORK/out"
       if ! "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1; then
         echo "| ${model%%:*} | $n | - | $variant | failed: $(grep -m1 -i 'error\|did not\|must' "$WORK/log" | cut -c1-120) |"
         continue
       fi
       s="$WORK/out/summary.json"
-      dofs=$(json "$s" n_dofs)
-      solves=$(json "$s" n_solves)
-      its=$(json "$s" linear_iterations)
+      dofs=$(summary_number "$s" n_dofs)
+      solves=$(summary_number "$s" n_solves)
+      its=$(summary_number "$s" linear_iterations)
       solve=$(grep -o '"solve": [0-9.e+-]*' "$s" | awk '{ print $2 }')
       tip=$(grep -o '"tip": \[[^]]*\]' "$s" | head -1 | tr -d '[],' |
         awk '{ printf "%.6g", $4 }')

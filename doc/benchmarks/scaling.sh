@@ -49,17 +49,7 @@ else
   RUN=""
 fi
 
-# geometry DIM n: the subsection's lines
-geometry() {
-  m=$(($2 / 4))
-  if [ "$1" = 3 ]; then
-    printf '  set Lower corner = 0, 0, 0\n  set Upper corner = 4, 1, 1\n'
-    printf '  set Subdivisions = %s, %s, %s\n' "$2" "$m" "$m"
-  else
-    printf '  set Lower corner = 0, 0\n  set Upper corner = 4, 1\n'
-    printf '  set Subdivisions = %s, %s\n' "$2" "$m"
-  fi
-}
+. "$(dirname "$0")/cantilever_case.sh"
 
 echo "$MODELS" | tr ';' '\n' > "$WORK/models"
 for n in $SIZES; do
@@ -68,62 +58,27 @@ for n in $SIZES; do
     formulation=$(echo "$model" | cut -d: -f1)
     factor=$(echo "$model" | cut -d: -f2)
     solver=$(echo "$model" | cut -d: -f3)
-    if [ "$DIM" = 3 ]; then
-      traction="0; 0; -1*t"
-      tip="4, 0.5, 0.5"
-    else
-      traction="0; -1*t"
-      tip="4, 0.5"
-    fi
     # CPD: Silling's bond constant for E = 1000 (nu = 1/4 in 3-D, 1/3 in
     # 2-D): c = 18 K / (pi delta^4), c = 9 E / (pi delta^3), delta = factor h
     c1=$(echo "$DIM $n ${factor:-1}" | awk '{ d = $3 * 4 / $2;
       if ($1 == 3) printf "%.6g", 18 * 1000 / 1.5 / (3.14159265 * d^4);
       else printf "%.6g", 9 * 1000 / (3.14159265 * d^3) }')
-    horizon=""
-    [ -n "$factor" ] && horizon="  set Horizon factor = $factor"
-    cat > "$WORK/case.prm" << END
-set Dimension = $DIM
-subsection Geometry
-$(geometry "$DIM" "$n")
-  set Distortion   = 0.25
-end
-subsection Discretization
-  set Formulation = $formulation
-$horizon
-end
-subsection Material
-  set Model           = neo-Hooke
-  set Young's modulus = 1000
-  set Poisson's ratio = 0.3
-end
+    {
+      cantilever_prm "$DIM" "$n" "$formulation" "$solver" "$WORK/out"
+      [ -n "$factor" ] &&
+        printf 'subsection Discretization\n  set Horizon factor = %s\nend\n' "$factor"
+      cat << END
 subsection CPD
   set C1 = $c1
   set C2 = 0
   set C3 = 0
 end
-subsection Boundary conditions
-  set Dirichlet = 0: $( [ "$DIM" = 3 ] && echo xyz || echo xy)
-  set Neumann   = 1
-  subsection Traction
-    set Function expression = $traction
-  end
-end
-subsection Loading
-  set Load steps = 1
-end
 subsection Linear solver
-  set Type                = $solver
-  set Tolerance           = 1e-10
   set AMG near-null space = rigid body modes
   set Reuse AMG           = $REUSE
 end
-subsection Output
-  set Directory = $WORK/out
-  set VTU       = false
-  set Points    = tip: $tip
-end
 END
+    } > "$WORK/case.prm"
     rm -rf "$WORK/out" "$WORK"/mem.*
     start=$(date +%s.%N)
     # shellcheck disable=SC2016

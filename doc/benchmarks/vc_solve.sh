@@ -1,10 +1,10 @@
 #!/bin/sh
 # The VC correction system solved iteratively ('VC solver = automatic', the
-# default: GMRES + ILU(0) on these regular systems) and directly (KLU with
-# shifted refinement, 'VC solver = direct'), on the 3-D cantilever of amg_iterations.sh (length 4,
-# 1 x 1 section, clamped at x = 0, dead traction on x = 4, neo-Hooke E =
-# 1000, nu = 0.3, cells distorted by 0.25, one load step, cg + ML with
-# tolerance 1e-10), VCBCPBG V5sn Unl at 'Horizon factor = 1.51', and on
+# default: GMRES with ILU(0) below 100,000 unknowns and ML AMG from there on
+# these regular systems; 'ilu' and 'amg' force one) and directly (KLU with
+# shifted refinement, 'VC solver = direct'), on the 3-D cantilever of
+# cantilever_case.sh (cg + ML), VCBCPBG V5sn Unl at 'Horizon factor =
+# 1.51', and on
 # Peridigm's tensile bar (prm/tensile_test.prm, 48,816 DoFs, 63 members per
 # family). Prints a markdown table: DoFs, VC phase (matrix, solve, corrected
 # tables and the unit-stress residual: timing.txt 'vc'), GMRES iterations,
@@ -15,6 +15,8 @@
 #   sh doc/benchmarks/vc_solve.sh BUILD [sizes] [tensile] > doc/benchmarks/vc_solve.md
 # sizes: the x-subdivisions, y = z = x/4 (default "16 32 48 64");
 # tensile: "yes" (default) adds the tensile bar.
+# SOLVERS: the 'VC solver' values to run (default "automatic direct";
+# "ilu amg" compare the two preconditioners).
 set -e
 PG=$1/applications/pg_solve/pg_solve
 SIZES=${2:-16 32 48 64}
@@ -22,6 +24,7 @@ TENSILE=${3:-yes}
 [ -x "$PG" ] || { echo "usage: $0 BUILD [sizes] [tensile]" >&2; exit 1; }
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
+. "$(dirname "$0")/cantilever_case.sh"
 
 # row LABEL SOLVER POINT: one table row from $WORK/out
 row() {
@@ -42,52 +45,19 @@ echo "| problem | VC solver | DoFs | VC phase s | GMRES its | solve s/Newton ste
 echo "|---|---|---|---|---|---|---|---|"
 for n in $SIZES; do
   m=$((n / 4))
-  for solver in automatic direct; do
-    cat > "$WORK/case.prm" <<END
-set Dimension = 3
-subsection Geometry
-  set Lower corner = 0, 0, 0
-  set Upper corner = 4, 1, 1
-  set Subdivisions = $n, $m, $m
-  set Distortion   = 0.25
-end
-subsection Discretization
-  set Formulation    = VCBCPBG V5sn Unl
-  set Horizon factor = 1.51
-end
-subsection Material
-  set Model           = neo-Hooke
-  set Young's modulus = 1000
-  set Poisson's ratio = 0.3
-end
-subsection Boundary conditions
-  set Dirichlet = 0: xyz
-  set Neumann   = 1
-  subsection Traction
-    set Function expression = 0; 0; -1*t
-  end
-end
-subsection Loading
-  set Load steps = 1
-end
-subsection Linear solver
-  set Type      = cg
-  set Tolerance = 1e-10
-  set VC solver = $solver
-end
-subsection Output
-  set Directory = $WORK/out
-  set VTU       = false
-  set Points    = tip: 4, 0.5, 0.5
-end
-END
+  for solver in ${SOLVERS:-automatic direct}; do
+    {
+      cantilever_prm 3 "$n" "VCBCPBG V5sn Unl" cg "$WORK/out"
+      printf 'subsection Discretization\n  set Horizon factor = 1.51\nend\n'
+      printf 'subsection Linear solver\n  set VC solver = %s\nend\n' "$solver"
+    } > "$WORK/case.prm"
     rm -rf "$WORK/out"
     "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1 || { echo "| cantilever $n | $solver | failed: $(tail -1 "$WORK/log") |"; continue; }
     row "cantilever $n x $m x $m" "$solver" tip
   done
 done
 if [ "$TENSILE" = yes ]; then
-  for solver in automatic direct; do
+  for solver in ${SOLVERS:-automatic direct}; do
     sed "s|File name .*|File name = ../shared/data/peridigm_tensile_test/tensile_test.msh|; s|Formulation = .*|Formulation = VCBCPBG V5sn Unl|; s|Directory = .*|Directory = $WORK/out|" prm/tensile_test.prm > "$WORK/case.prm"
     cat >> "$WORK/case.prm" <<END
 subsection Linear solver

@@ -603,7 +603,7 @@ namespace pg
     system.reinit(particles, families, elements, owned_families, owned_dofs);
     CorrectionFactors<dim> factors = system.solve(unit_stress);
     elements.set_correction_factors(factors.alpha, factors.second_order_alpha);
-    elements.build(owned_families, tables);
+    elements.correct(owned_families, tables);
     return factors;
   }
 

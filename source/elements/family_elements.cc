@@ -380,26 +380,63 @@ namespace pg
       {
         trial_at(j);
         table.add_point(geom.volumes[j], g, particles.position(members[j]));
-        if (formulation.method == Method::ppg1)
-          {
-            // g^{jjk}: family j's master gradient for node k
-            const auto family_j = families.members(members[j]);
-            const auto found =
-              std::lower_bound(family_j.begin() + 1, family_j.end(), k);
-            Assert(found != family_j.end() && *found == k,
-                   ExcMessage("The families are not pairwise."));
-            const Tensor<1, dim> &t =
-              master_test[members[j]][found - family_j.begin()];
-            table.add_test_vector(0, t);
-            table.add_test_vector(j, -t);
-          }
-        else
-          {
-            const Tensor<1, dim> &t = master_test[k][j];
-            table.add_test_vector(j, t);
-            table.add_test_vector(0, -t);
-          }
+        const Tensor<1, dim> &t = ppg_test_vector(k, j);
+        table.add_test_vector(formulation.method == Method::ppg1 ? 0 : j, t);
+        table.add_test_vector(formulation.method == Method::ppg1 ? j : 0, -t);
       }
+  }
+
+
+
+  template <int dim>
+  const Tensor<1, dim> &
+  FamilyElements<dim>::ppg_test_vector(const unsigned int k,
+                                       const unsigned int j) const
+  {
+    if (formulation.method == FormulationCode::Method::ppg2)
+      return master_test[k][j];
+    // PPG1: g^{jjk}, family j's master gradient for node k
+    const unsigned int member   = families.members(k)[j];
+    const auto         family_j = families.members(member);
+    const auto         found =
+      std::lower_bound(family_j.begin() + 1, family_j.end(), k);
+    Assert(found != family_j.end() && *found == k,
+           ExcMessage("The families are not pairwise."));
+    return master_test[member][found - family_j.begin()];
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyElements<dim>::correct(const unsigned int    k,
+                               QuadratureTable<dim> &table) const
+  {
+    Assert(!alpha.empty(), ExcMessage("Call set_correction_factors() first."));
+    const unsigned int n = families.members(k).size();
+    if (formulation.method != FormulationCode::Method::pbg)
+      {
+        // the test vectors of point j - 1 are (t, -t), see build()
+        AssertDimension(table.test_vectors.size(), 2 * (n - 1));
+        for (unsigned int j = 1; j < n; ++j)
+          {
+            const Tensor<1, dim> &t             = ppg_test_vector(k, j);
+            table.test_vectors[2 * (j - 1)]     = t;
+            table.test_vectors[2 * (j - 1) + 1] = -t;
+          }
+        return;
+      }
+    if (formulation.points == FormulationCode::Points::u1)
+      {
+        AssertDimension(table.trial.size(), n);
+        std::copy(master[k].begin(), master[k].end(), table.trial.begin());
+        return;
+      }
+    AssertDimension(table.trial.size(), n * n);
+    const ShapeFunctions::FamilyGeometry<dim> geom = geometry(k);
+    for (unsigned int j = 0; j < n; ++j)
+      for (unsigned int a = 0; a < n; ++a)
+        table.trial[j * n + a] += correction(k, geom, j, a);
   }
 
 
@@ -412,6 +449,19 @@ namespace pg
     tables.resize(ks.size());
     parallel_for_each_index(ks.size(), [&](const unsigned int f) {
       build(ks[f], tables[f]);
+    });
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyElements<dim>::correct(const std::vector<unsigned int>   &ks,
+                               std::vector<QuadratureTable<dim>> &tables) const
+  {
+    AssertDimension(tables.size(), ks.size());
+    parallel_for_each_index(ks.size(), [&](const unsigned int f) {
+      correct(ks[f], tables[f]);
     });
   }
 

@@ -1,5 +1,6 @@
 // Shared by the correction_system tests: one CorrectionSystem::reinit() +
-// solve() on a ParticleFixture, with d^k before and after.
+// solve() on a ParticleFixture, with d^k before and after; checks that
+// FamilyElements::correct() of the uncorrected tables equals a new build().
 #ifndef pg_tests_elements_correction_fixture_h
 #define pg_tests_elements_correction_fixture_h
 
@@ -58,8 +59,20 @@ correct(const ParticleFixture<dim> &fixture,
                              system.system_matrix().n_nonzero_elements();
   elements.set_correction_factors(result.factors.alpha,
                                   result.factors.second_order_alpha);
+  // FamilyElements::correct() of the uncorrected tables must give bitwise
+  // the tables that build() gives now
+  std::vector<QuadratureTable<dim>> corrected = result.tables;
+  elements.correct(owned_families, corrected);
   for (unsigned int k = 0; k < n; ++k)
     elements.build(k, result.tables[k]);
+  for (unsigned int k = 0; k < n; ++k)
+    AssertThrow(corrected[k].trial == result.tables[k].trial &&
+                  corrected[k].test_vectors == result.tables[k].test_vectors &&
+                  corrected[k].test_nodes == result.tables[k].test_nodes &&
+                  corrected[k].weights == result.tables[k].weights,
+                ExcMessage("FamilyElements::correct() differs from build() "
+                           "in family " +
+                           std::to_string(k)));
   result.unit_stress = unit_stress_residual(fixture.families,
                                             owned_families,
                                             result.tables,

@@ -11,6 +11,8 @@
 //    about 1e3 here),
 // 4. and the AMG needs fewer GMRES iterations than ILU(0) (the reason it
 //    is there: doc/benchmarks/vc_solve.md).
+// correction_fixture.h also checks that the tables corrected in place
+// (FamilyElements::correct()) equal the rebuilt ones bitwise.
 
 #include <pg/base/formulation_code.h>
 

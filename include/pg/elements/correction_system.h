@@ -237,8 +237,9 @@ namespace pg
    * sections 11.4-11.7): reinit @p system on the families @p owned_families
    * of this rank (with its DoFs @p owned_dofs), solve it for the
    * uncorrected unit-stress residual @p unit_stress d^k(0), hand the
-   * factors to @p elements (PBG: test = trial corrected) and rebuild
-   * @p tables (tables[i] of family owned_families[i]) with them. Returns
+   * factors to @p elements (PBG: test = trial corrected) and correct
+   * @p tables (tables[i] of family owned_families[i], as @p elements built
+   * them before: FamilyElements::correct()) with them. Returns
    * the factors, for their statistics; d^k of the new tables is then
    * round-off at interior particles.
    */

@@ -79,6 +79,21 @@ namespace pg
           std::vector<QuadratureTable<dim>> &tables) const;
 
     /**
+     * Apply the correction of set_correction_factors() to @p tables, the
+     * tables of the families @p ks that build() gave before it (tables[i]
+     * of family ks[i]), on all threads: the same tables as a build() now,
+     * bitwise, without computing the shape functions again. PBG adds
+     * phi^{ka} Q^{kj} alpha^k to the trial (= test) vector of member a at
+     * each point j; PPG replaces its test vectors by the corrected master
+     * test gradients; the trial vectors of PPG do not change. The VC
+     * set-up so builds the tables once instead of twice (3-D cantilever,
+     * 421,443 DoFs: 4.7 s of its 19.5 s).
+     */
+    void
+    correct(const std::vector<unsigned int>   &ks,
+            std::vector<QuadratureTable<dim>> &tables) const;
+
+    /**
      * Effective trial gradients of family @p k at its master, one per
      * member: F^{kk} = sum_b x^b (x) B^{kkb}.
      */
@@ -169,6 +184,19 @@ namespace pg
                const ShapeFunctions::FamilyGeometry<dim> &geometry,
                const unsigned int                         point,
                const unsigned int                         a) const;
+
+    /**
+     * The test gradient t of PPG family @p k at its point j (member j): its
+     * test vectors there are t for one node and -t for the other (PPG1:
+     * family j's master gradient for node k at the master, -t at j; PPG2:
+     * family k's master gradient for j at j, -t at the master).
+     */
+    const Tensor<1, dim> &
+    ppg_test_vector(const unsigned int k, const unsigned int j) const;
+
+    /** correct() of the table of family @p k. */
+    void
+    correct(const unsigned int k, QuadratureTable<dim> &table) const;
 
     /** The diagonal matrix with the entries @p v. */
     static Tensor<2, dim>
