@@ -306,6 +306,7 @@ namespace pg
     v.time_vc                = &system.time_vc;
     v.time_assembly          = &system.time_assembly;
     v.time_solve             = &system.time_solve;
+    v.time_amg_operator      = &system.time_amg_operator;
     v.total_timer            = &total_timer;
     v.postprocess_timer      = &postprocess_timer;
     v.add_dynamic_statistics = {}; // set by run() for a DynamicAnalysis

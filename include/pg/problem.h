@@ -28,7 +28,9 @@ namespace pg
     unsigned int            n_families       = 0;
     types::global_dof_index n_dofs           = 0;
     std::size_t             matrix_nonzeros  = 0;
-    bool                    converged        = false;
+    /** Of the Q1 matrix of 'AMG operator' (0: ML uses the tangent). */
+    std::size_t amg_operator_nonzeros = 0;
+    bool        converged             = false;
     /**
      * Why the run stopped: empty while it runs and when it finished; the
      * error message (user_message(), on one line) when an exception ended

@@ -289,6 +289,7 @@ namespace pg
         << "  \"n_families\": " << s.n_families << ",\n"
         << "  \"n_dofs\": " << s.n_dofs << ",\n"
         << "  \"matrix_nonzeros\": " << s.matrix_nonzeros << ",\n"
+        << "  \"amg_operator_nonzeros\": " << s.amg_operator_nonzeros << ",\n"
         << "  \"converged\": " << (s.converged ? "true" : "false") << ",\n"
         << "  \"status\": \""
         << (s.interrupted           ? "interrupted" :

@@ -204,6 +204,10 @@ namespace pg
       pcout << "  DoFs:            " << discretization.dof_handler.n_dofs()
             << "\n"
             << "  matrix nonzeros: " << summary.matrix_nonzeros << std::endl;
+      if (summary.amg_operator_nonzeros > 0)
+        pcout << "  AMG operator:    Q1 cells, "
+              << summary.amg_operator_nonzeros
+              << " nonzeros (Linear solver/AMG operator)" << std::endl;
     }
 
 

@@ -61,6 +61,7 @@ namespace pg
                                {"vc", *view.time_vc},
                                {"assembly", *view.time_assembly},
                                {"solve", *view.time_solve},
+                               {"amg_operator", *view.time_amg_operator},
                                {"postprocess", view.postprocess_timer->wall_time()},
                                {"total", view.total_timer->wall_time()}};
       // The condensed pressure of a mixed formulation: its range goes to

@@ -15,6 +15,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_index_access.h>
 
 namespace pg
 {
@@ -202,6 +203,7 @@ namespace pg
                                                relevant_dofs);
     amg_cache.clear();
     matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
+    setup_amg_operator(condensed_pressure);
     summary.matrix_nonzeros = matrix.n_nonzero_elements();
     rhs.reinit(owned_dofs, comm);
     update.reinit(owned_dofs, comm);
@@ -551,13 +553,17 @@ namespace pg
     update = 0;
     try
       {
+        std::function<const LinearAlgebra::SparseMatrix *()> amg_operator;
+        if (amg_assembler != nullptr)
+          amg_operator = [this]() { return assemble_amg_operator(); };
         summary.assembly_cost.linear_iterations +=
           solve_linear_system(prm.linear_solver,
                               discretization.dof_handler,
                               matrix,
                               update,
                               rhs,
-                              &amg_cache);
+                              &amg_cache,
+                              amg_operator);
       }
     catch (const SolverControl::NoConvergence &e)
       {
@@ -582,6 +588,116 @@ namespace pg
         assembler->recover_local_fields(ghosted_update);
       }
     return true;
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::setup_amg_operator(
+    const Materials::VolumetricSplit<dim> *condensed_pressure)
+  {
+    amg_assembler.reset();
+    amg_cells.reset();
+    owned_cells.clear();
+    summary.amg_operator_nonzeros = 0;
+    // FE everywhere: the Q1 tangent is the tangent. 'automatic': displacement
+    // codes from 10,000 DoFs on. On smaller systems ML's hierarchy of the
+    // tangent ends in a direct coarse solve after a level or two and needs
+    // a fifth of the iterations; for the mixed codes the Q1P0 / H1P0
+    // hierarchy needs 2 to 4 times the iterations at nu = 0.49, and the
+    // solves take 1.6 times as long (doc/benchmarks/amg_operator.md).
+    const std::string &choice = prm.linear_solver.amg_operator;
+    if (choice == "tangent" || prm.linear_solver.type == "direct" ||
+        discretization.particles.n_particles() == 0 ||
+        (choice == "automatic" &&
+         (discretization.dof_handler.n_dofs() < 10000 ||
+          condensed_pressure != nullptr)))
+      return;
+    const bool hypercubes =
+      discretization.triangulation.all_reference_cells_are_hyper_cube();
+    AssertThrow(hypercubes || choice != "Q1 cells",
+                ExcBadParameter("Linear solver/AMG operator",
+                                choice,
+                                "the mesh has simplex cells, which are not Q1 "
+                                "cells; use 'tangent' or 'automatic'."));
+    if (!hypercubes)
+      return;
+    for (const auto &cell : discretization.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        owned_cells.push_back(cell);
+    amg_cells = std::make_unique<Q1CellGroup<dim>>(owned_cells,
+                                                   material,
+                                                   loads,
+                                                   condensed_pressure);
+    amg_assembler =
+      std::make_unique<Assembler<dim>>(zero_constraints,
+                                       std::vector<ElementGroup<dim> *>{
+                                         amg_cells.get()});
+    DynamicSparsityPattern dsp(discretization.relevant_dofs);
+    amg_assembler->add_sparsity(dsp);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               discretization.owned_dofs,
+                                               comm,
+                                               discretization.relevant_dofs);
+    amg_matrix.reinit(discretization.owned_dofs,
+                      discretization.owned_dofs,
+                      dsp,
+                      comm);
+    summary.amg_operator_nonzeros = amg_matrix.n_nonzero_elements();
+  }
+
+
+
+  template <int dim>
+  const LinearAlgebra::SparseMatrix *
+  DiscreteSystem<dim>::assemble_amg_operator()
+  {
+    Timer                 timer;
+    LinearAlgebra::Vector residual(discretization.owned_dofs, comm),
+      unbalanced(discretization.owned_dofs, comm);
+    const std::string failed =
+      amg_assembler->assemble(solution, &amg_matrix, residual, unbalanced);
+    // e.g. an inverted Q1 cell where the families are fine: the tangent
+    if (Utilities::MPI::logical_or(!failed.empty(), comm))
+      {
+        time_amg_operator += timer.wall_time();
+        return nullptr;
+      }
+    // Newmark's c0 M: its nonzeros (Q1 cells' consistent mass, the
+    // particles' lumped one) lie in the Q1 pattern; the mass is stored in
+    // the pattern of the tangent, whose other entries are zero
+    // (read through Epetra row views: deal.II's row iterators copy a row
+    // on every construction)
+    if (tangent_mass != nullptr)
+      {
+        const Epetra_CrsMatrix &M = tangent_mass->trilinos_matrix();
+        std::vector<types::global_dof_index> columns;
+        std::vector<double>                  values;
+        for (int r = 0; r < M.NumMyRows(); ++r)
+          {
+            int     n_entries;
+            double *row_values;
+            int    *row_columns;
+            M.ExtractMyRowView(r, n_entries, row_values, row_columns);
+            columns.clear();
+            values.clear();
+            for (int i = 0; i < n_entries; ++i)
+              if (row_values[i] != 0.)
+                {
+                  columns.push_back(
+                    TrilinosWrappers::global_column_index(M, row_columns[i]));
+                  values.push_back(tangent_mass_factor * row_values[i]);
+                }
+            amg_matrix.add(TrilinosWrappers::global_row_index(M, r),
+                           columns.size(),
+                           columns.data(),
+                           values.data());
+          }
+        amg_matrix.compress(VectorOperation::add);
+      }
+    time_amg_operator += timer.wall_time();
+    return &amg_matrix;
   }
 
 

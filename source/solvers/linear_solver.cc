@@ -180,12 +180,14 @@ namespace pg
 
   template <int dim>
   unsigned int
-  solve_linear_system(const Parameters::LinearSolver    &parameters,
-                      const DoFHandler<dim>             &dof_handler,
-                      const LinearAlgebra::SparseMatrix &matrix,
-                      LinearAlgebra::Vector             &solution,
-                      const LinearAlgebra::Vector       &rhs,
-                      AMGCache                          *cache)
+  solve_linear_system(
+    const Parameters::LinearSolver                             &parameters,
+    const DoFHandler<dim>                                      &dof_handler,
+    const LinearAlgebra::SparseMatrix                          &matrix,
+    LinearAlgebra::Vector                                      &solution,
+    const LinearAlgebra::Vector                                &rhs,
+    AMGCache                                                   *cache,
+    const std::function<const LinearAlgebra::SparseMatrix *()> &amg_operator)
   {
     if (parameters.type == "direct")
       {
@@ -208,7 +210,9 @@ namespace pg
     AMGCache  own;
     AMGCache &amg = (cache != nullptr && parameters.reuse_amg) ? *cache : own;
     unsigned int &n_builds = (cache != nullptr ? *cache : own).n_builds;
-    const auto    build    = [&]() {
+    // a hierarchy from @p hierarchy_matrix, applied to (a later) matrix
+    const auto build = [&](
+                         const LinearAlgebra::SparseMatrix &hierarchy_matrix) {
       amg.clear();
       amg.amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
       TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
@@ -223,7 +227,7 @@ namespace pg
       // space, then the user's 'AMG parameters'
       Teuchos::ParameterList              ml_parameters;
       std::unique_ptr<Epetra_MultiVector> translations;
-      amg_data.set_parameters(ml_parameters, translations, matrix);
+      amg_data.set_parameters(ml_parameters, translations, hierarchy_matrix);
       // ML copies the null space in its set-up (deal.II's own
       // PreconditionAMG::initialize() frees its modes after it, too)
       std::unique_ptr<Epetra_MultiVector> modes;
@@ -237,13 +241,15 @@ namespace pg
         }
       for (const auto &[name, value] : parameters.amg_parameters)
         set_ml_parameter(ml_parameters, name, value);
-      amg.amg->initialize(matrix, ml_parameters);
+      amg.amg->initialize(hierarchy_matrix, ml_parameters);
       amg.matrix = &matrix;
       ++n_builds;
     };
 
-    const auto krylov = [&]() {
-      SolverControl control(std::max<unsigned int>(1000, rhs.size()),
+    const unsigned int max_iterations =
+      std::max<unsigned int>(1000, rhs.size());
+    const auto krylov = [&](const unsigned int max_steps) {
+      SolverControl control(max_steps,
                             parameters.tolerance * rhs.l2_norm(),
                             false,
                             false);
@@ -267,18 +273,37 @@ namespace pg
       return control.last_step();
     };
 
+    // The solve with a new hierarchy: from the AMG operator if there is one
+    // (at most 1000 iterations), else, or if the operator fails or does not
+    // converge, from the tangent. Adds the iterations of a failed attempt
+    // to @p failed_iterations.
+    const LinearAlgebra::Vector start = solution;
+    const auto with_new_hierarchy     = [&](unsigned int failed_iterations) {
+      if (const LinearAlgebra::SparseMatrix *auxiliary =
+            (amg_operator ? amg_operator() : nullptr))
+        try
+          {
+            build(*auxiliary);
+            amg.first_iterations = krylov(1000);
+            return failed_iterations + amg.first_iterations;
+          }
+        catch (const SolverControl::NoConvergence &failure)
+          {
+            failed_iterations += failure.last_step;
+            solution = start;
+          }
+      build(matrix);
+      amg.first_iterations = krylov(max_iterations);
+      return failed_iterations + amg.first_iterations;
+    };
+
     if (amg.amg == nullptr || amg.matrix != &matrix)
-      {
-        build();
-        amg.first_iterations = krylov();
-        return amg.first_iterations;
-      }
+      return with_new_hierarchy(0);
     // an old hierarchy: on failure, a new one for this solve; on slow
     // convergence, a new one for the next
-    const LinearAlgebra::Vector start = solution;
     try
       {
-        const unsigned int iterations = krylov();
+        const unsigned int iterations = krylov(max_iterations);
         if (2 * iterations > 3 * amg.first_iterations + 10)
           amg.clear();
         return iterations;
@@ -286,9 +311,7 @@ namespace pg
     catch (const SolverControl::NoConvergence &failure)
       {
         solution = start;
-        build();
-        amg.first_iterations = krylov();
-        return failure.last_step + amg.first_iterations;
+        return with_new_hierarchy(failure.last_step);
       }
   }
 
@@ -465,17 +488,21 @@ namespace pg
 
 
   template unsigned int
-  solve_linear_system<2>(const Parameters::LinearSolver &,
-                         const DoFHandler<2> &,
-                         const LinearAlgebra::SparseMatrix &,
-                         LinearAlgebra::Vector &,
-                         const LinearAlgebra::Vector &,
-                         AMGCache *);
+  solve_linear_system<2>(
+    const Parameters::LinearSolver &,
+    const DoFHandler<2> &,
+    const LinearAlgebra::SparseMatrix &,
+    LinearAlgebra::Vector &,
+    const LinearAlgebra::Vector &,
+    AMGCache *,
+    const std::function<const LinearAlgebra::SparseMatrix *()> &);
   template unsigned int
-  solve_linear_system<3>(const Parameters::LinearSolver &,
-                         const DoFHandler<3> &,
-                         const LinearAlgebra::SparseMatrix &,
-                         LinearAlgebra::Vector &,
-                         const LinearAlgebra::Vector &,
-                         AMGCache *);
+  solve_linear_system<3>(
+    const Parameters::LinearSolver &,
+    const DoFHandler<3> &,
+    const LinearAlgebra::SparseMatrix &,
+    LinearAlgebra::Vector &,
+    const LinearAlgebra::Vector &,
+    AMGCache *,
+    const std::function<const LinearAlgebra::SparseMatrix *()> &);
 } // namespace pg

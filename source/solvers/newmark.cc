@@ -88,10 +88,12 @@ namespace pg
       operations.assemble_residual = [&]() {
         return add_inertia(assemble_residual(), false);
       };
+    system.set_tangent_mass(c0, &masses.condensed);
     operations.reference = [&](const double first) {
       return std::max({first, static_norm, Ma.l2_norm()});
     };
     const NewtonSolver::Result result = NewtonSolver(newton).solve(operations);
+    system.set_tangent_mass(0, nullptr);
     last_residuals                    = result.residuals;
     last_failure                      = result.failure;
     iterations                        = result.updates;

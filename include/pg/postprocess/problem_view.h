@@ -119,10 +119,15 @@ namespace pg
       /** Mesh::diameter() of the mesh, set in setup. */
       const double *mesh_diameter = nullptr;
 
-      /** Wall times (s) of the phases and the timers, for summary.timing. */
+      /**
+       * Wall times (s) of the phases and the timers, for summary.timing
+       * (time_amg_operator: the Q1 tangents of 'AMG operator = Q1 cells',
+       * part of time_solve).
+       */
       const double *time_mesh = nullptr, *time_setup = nullptr,
                    *time_shape = nullptr, *time_vc = nullptr,
-                   *time_assembly = nullptr, *time_solve = nullptr;
+                   *time_assembly = nullptr, *time_solve = nullptr,
+                   *time_amg_operator = nullptr;
       const Timer *total_timer = nullptr, *postprocess_timer = nullptr;
 
       /** Set the time of every parsed function to the load factor. */

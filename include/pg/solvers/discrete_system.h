@@ -202,6 +202,14 @@ namespace pg
     }
 
     void
+    set_tangent_mass(const double                       factor,
+                     const LinearAlgebra::SparseMatrix *mass) override
+    {
+      tangent_mass        = mass;
+      tangent_mass_factor = factor;
+    }
+
+    void
     external_force(LinearAlgebra::Vector &f_ext) override
     {
       compute_external_force(f_ext);
@@ -233,6 +241,22 @@ namespace pg
      */
     void
     correct_variational_consistency();
+
+    /**
+     * The Q1 group and the sparsity of amg_matrix for 'AMG operator = Q1
+     * cells' (mixed codes: Q1P0 / H1P0 with @p condensed_pressure).
+     */
+    void
+    setup_amg_operator(
+      const Materials::VolumetricSplit<dim> *condensed_pressure);
+
+    /**
+     * amg_matrix at the current displacement, the matrix of a new ML
+     * hierarchy; nullptr if a Q1 cell fails there (e.g. inverted), and the
+     * hierarchy is built from the tangent.
+     */
+    const LinearAlgebra::SparseMatrix *
+    assemble_amg_operator();
 
     /** Set the time of every parsed function to the load factor @p t. */
     void
@@ -288,7 +312,25 @@ namespace pg
 
     AffineConstraints<double>   constraints, zero_constraints;
     LinearAlgebra::SparseMatrix matrix;
-    /** ML's hierarchy of the Newton solves ('Reuse AMG'), built from matrix. */
+    /**
+     * 'AMG operator = Q1 cells' or 'automatic' (with particles, cg or gmres,
+     * hexahedral / quadrilateral cells): the Q1
+     * (Q1P0 / H1P0) tangent on every owned cell, on the DoFs and with the
+     * constraints of matrix, that ML's hierarchy is built from; its cells,
+     * group and assembler (null otherwise). Declared before amg_cache,
+     * whose hierarchy wraps it.
+     */
+    LinearAlgebra::SparseMatrix       amg_matrix;
+    std::vector<CellIterator>         owned_cells;
+    std::unique_ptr<Q1CellGroup<dim>> amg_cells;
+    std::unique_ptr<Assembler<dim>>   amg_assembler;
+    /** Newmark's c0 M in the tangent (set_tangent_mass()), or nullptr. */
+    const LinearAlgebra::SparseMatrix *tangent_mass        = nullptr;
+    double                             tangent_mass_factor = 0;
+    /**
+     * ML's hierarchy of the Newton solves ('Reuse AMG'), built from matrix
+     * or from amg_matrix.
+     */
     AMGCache amg_cache;
     /**
      * solution is ghosted over the relevant DoFs (what the assembly and the
@@ -335,8 +377,12 @@ namespace pg
     /** Why the last failed (sub)step failed, for the final message. */
     std::string last_failure;
 
-    /** Wall times (s) of the phases, reported in summary.json. */
-    double time_vc = 0, time_assembly = 0, time_solve = 0;
+    /**
+     * Wall times (s) of the phases, reported in summary.json;
+     * time_amg_operator (part of time_solve) assembles amg_matrix.
+     */
+    double time_vc = 0, time_assembly = 0, time_solve = 0,
+           time_amg_operator = 0;
   };
 } // namespace pg
 

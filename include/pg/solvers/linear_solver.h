@@ -7,6 +7,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,6 +51,12 @@ namespace pg
    * rebuilt when the solve does not converge (the solve is repeated) or
    * needs more than 1.5 times (plus 5) the iterations of its first solve
    * (for the next one).
+   *
+   * With @p amg_operator, a new hierarchy is built from the matrix it
+   * returns ('AMG operator = Q1 cells'; it must outlive the hierarchy, i.e.
+   * the cache), and from @p matrix where it returns nullptr or where the
+   * solve with it does not converge in 1000 iterations (the solve is then
+   * repeated).
    */
   template <int dim>
   unsigned int
@@ -58,7 +65,9 @@ namespace pg
                       const LinearAlgebra::SparseMatrix &matrix,
                       LinearAlgebra::Vector             &solution,
                       const LinearAlgebra::Vector       &rhs,
-                      AMGCache                          *cache = nullptr);
+                      AMGCache                          *cache = nullptr,
+                      const std::function<const LinearAlgebra::SparseMatrix *()>
+                        &amg_operator = {});
 
   /**
    * An ML hierarchy kept from one solve_linear_system() to the next
@@ -83,12 +92,14 @@ namespace pg
   private:
     template <int dim>
     friend unsigned int
-    solve_linear_system(const Parameters::LinearSolver &,
-                        const DoFHandler<dim> &,
-                        const LinearAlgebra::SparseMatrix &,
-                        LinearAlgebra::Vector &,
-                        const LinearAlgebra::Vector &,
-                        AMGCache *);
+    solve_linear_system(
+      const Parameters::LinearSolver &,
+      const DoFHandler<dim> &,
+      const LinearAlgebra::SparseMatrix &,
+      LinearAlgebra::Vector &,
+      const LinearAlgebra::Vector &,
+      AMGCache *,
+      const std::function<const LinearAlgebra::SparseMatrix *()> &);
 
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     /** The matrix the hierarchy was built from. */

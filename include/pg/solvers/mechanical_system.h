@@ -82,6 +82,17 @@ namespace pg
     virtual LinearAlgebra::SparseMatrix &
     tangent() = 0;
 
+    /**
+     * Newmark: the tangent gains @p factor times @p mass (condensed) from
+     * now on; the matrix an AMG hierarchy is built from ('Linear
+     * solver/AMG operator = Q1 cells') gains it, too. nullptr: none. A
+     * system without such a matrix ignores it.
+     */
+    virtual void
+    set_tangent_mass(const double /*factor*/,
+                     const LinearAlgebra::SparseMatrix * /*mass*/)
+    {}
+
     /** f_ext at the current time (the loads are dead). */
     virtual void
     external_force(LinearAlgebra::Vector &f_ext) = 0;

@@ -71,6 +71,8 @@ namespace pg
       std::string near_null_space;
       /** Keep ML's hierarchy between solves (entry 'Reuse AMG'). */
       bool reuse_amg;
+      /** The matrix of ML's hierarchy: automatic | tangent | Q1 cells. */
+      std::string amg_operator;
       /** The VC correction system: automatic | direct */
       std::string vc_solver;
       /**
