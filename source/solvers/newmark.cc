@@ -94,9 +94,9 @@ namespace pg
     };
     const NewtonSolver::Result result = NewtonSolver(newton).solve(operations);
     system.set_tangent_mass(0, nullptr);
-    last_residuals                    = result.residuals;
-    last_failure                      = result.failure;
-    iterations                        = result.updates;
+    last_residuals = result.residuals;
+    last_failure   = result.failure;
+    iterations     = result.updates;
     if (!result.converged())
       {
         NewtonSolver::report(result, out);
