@@ -13,6 +13,9 @@
 # RANKS=2 runs every case under 'mpirun -np 2' (one thread per rank on a
 # 2-core machine; on 1 rank pg_solve uses all cores for its threads).
 # The columns setup ... solve are the phases of timing.txt (s).
+# AMG_OPERATOR=tangent (or 'Q1 cells') sets 'Linear solver/AMG operator'
+# (default: automatic, i.e. Q1 cells for the PG codes on this mesh) and
+# names it beside the formulation.
 set -e
 PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
 RANKS=${RANKS:-1}
@@ -44,6 +47,14 @@ end
 subsection Linear solver
   set Type = gmres"
     fi
+    label="$formulation"
+    if [ -n "${AMG_OPERATOR:-}" ]; then
+      label="$formulation, AMG operator $AMG_OPERATOR"
+      name="${name}_amg_$(echo "$AMG_OPERATOR" | tr ' ' '_')"
+    fi
+    if [ "$RANKS" -gt 1 ]; then
+      name="${name}_${RANKS}_ranks"
+    fi
     cat prm/tensile_test.prm - > "$WORK/$name.prm" <<END
 subsection Geometry
   set File name = $DATA/$mesh.msh
@@ -51,6 +62,9 @@ end
 subsection Discretization
   set Formulation = $code
 $extra
+end
+subsection Linear solver
+  set AMG operator = ${AMG_OPERATOR:-automatic}
 end
 subsection Output
   set Directory = $WORK/$name
@@ -61,7 +75,7 @@ END
     $LAUNCH "$PG_SOLVE" "$WORK/$name.prm" > "$OUT/$name.log" 2>&1 || status=$?
     end=$(date +%s.%N)
     cp "$WORK/$name/timing.txt" "$OUT/$name.timing.txt" 2>/dev/null || true
-    python3 - "$WORK/$name" "$mesh" "$formulation" "$start" "$end" "$status" <<'PY'
+    python3 - "$WORK/$name" "$mesh" "$label" "$start" "$end" "$status" <<'PY'
 import json, os, sys
 out, mesh, formulation, start, end, status = sys.argv[1:]
 wall = float(end) - float(start)

@@ -601,18 +601,25 @@ namespace pg
     amg_cells.reset();
     owned_cells.clear();
     summary.amg_operator_nonzeros = 0;
-    // FE everywhere: the Q1 tangent is the tangent. 'automatic': displacement
-    // codes from 10,000 DoFs on. On smaller systems ML's hierarchy of the
+    // 'automatic': the PG displacement codes from 10,000 DoFs on
+    // (doc/benchmarks/amg_operator.md). Not FE everywhere (the Q1 tangent
+    // is the tangent); not below 10,000 DoFs, where ML's hierarchy of the
     // tangent ends in a direct coarse solve after a level or two and needs
-    // a fifth of the iterations; for the mixed codes the Q1P0 / H1P0
-    // hierarchy needs 2 to 4 times the iterations at nu = 0.49, and the
-    // solves take 1.6 times as long (doc/benchmarks/amg_operator.md).
+    // a fifth of the iterations; not the mixed codes, whose Q1P0 / H1P0
+    // hierarchy needs 2 to 4 times the iterations at nu = 0.49; not the
+    // classical correspondence (U1, with hourglass force: GMRES 1.7 times
+    // slower on Peridigm's tensile bar) nor CPD (not measured).
     const std::string &choice = prm.linear_solver.amg_operator;
+    const bool         weak_u1_modes =
+      formulation.points == FormulationCode::Points::u1 &&
+      !formulation.implicit_gradients;
+    const bool suits_automatic =
+      discretization.dof_handler.n_dofs() >= 10000 &&
+      condensed_pressure == nullptr && !weak_u1_modes &&
+      formulation.method != FormulationCode::Method::cpd;
     if (choice == "tangent" || prm.linear_solver.type == "direct" ||
         discretization.particles.n_particles() == 0 ||
-        (choice == "automatic" &&
-         (discretization.dof_handler.n_dofs() < 10000 ||
-          condensed_pressure != nullptr)))
+        (choice == "automatic" && !suits_automatic))
       return;
     const bool hypercubes =
       discretization.triangulation.all_reference_cells_are_hyper_cube();

@@ -200,12 +200,13 @@ namespace pg
           "the current displacement (inverted), or where CG/GMRES with the "
           "Q1 hierarchy does not converge in 1000 iterations, the hierarchy "
           "is built from the tangent (and the solve repeated). Not for "
-          "simplex meshes. automatic: Q1 cells for displacement codes with "
-          "particles from 10,000 DoFs on; the tangent otherwise (FE "
-          "everywhere; small systems, where the tangent's hierarchy needs a "
-          "fifth of the iterations; mixed codes, where the Q1P0 / H1P0 "
-          "hierarchy needs 2 to 4 times the tangent's iterations at nu = "
-          "0.49).");
+          "simplex meshes. automatic: Q1 cells for the PG displacement codes "
+          "(Unl, U2, U1SIG, U1SUnl; PBG and PPG) with particles from 10,000 "
+          "DoFs on; the tangent otherwise: FE everywhere; small systems, "
+          "where the tangent's hierarchy needs a fifth of the iterations; "
+          "mixed codes, where the Q1P0 / H1P0 hierarchy needs 2 to 4 times "
+          "the iterations at nu = 0.49; the classical correspondence (U1, "
+          "with hourglass force: 1.7 times slower) and CPD.");
         prm.declare_entry(
           "VC solver",
           "automatic",
