@@ -304,6 +304,23 @@ namespace pg
                     file_name,
                     "it contains no cells of dimension " + std::to_string(dim),
                     contents_hint)));
+      // Q1 cells and the vertices of meshfree cells: quadrilaterals and
+      // hexahedra only (FE_Q on a simplex stops deal.II's DoF numbering)
+      AssertThrow(triangulation.all_reference_cells_are_hyper_cube(),
+                  ExcMessage(unreadable_file_message(
+                    file_name,
+                    std::string("it contains ") +
+                      (dim == 2 ? "triangles" :
+                                  "tetrahedra, prisms or pyramids") +
+                      ", and pg's cells are Q1 elements or meshfree cells "
+                      "whose vertices are the particles: " +
+                      (dim == 2 ? "quadrilaterals" : "hexahedra") +
+                      " only",
+                    "Recombine the mesh into " +
+                      std::string(dim == 2 ? "quadrilaterals" : "hexahedra") +
+                      " (Gmsh: 'Mesh.RecombineAll = 1' with "
+                      "'Mesh.SubdivisionAlgorithm = " +
+                      (dim == 2 ? "1" : "2") + "').")));
       handle_coincident_vertices(parameters, triangulation, notes);
 
       // A cell without area (volume) has no shape function gradients; the

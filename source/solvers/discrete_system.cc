@@ -621,15 +621,6 @@ namespace pg
         discretization.particles.n_particles() == 0 ||
         (choice == "automatic" && !suits_automatic))
       return;
-    const bool hypercubes =
-      discretization.triangulation.all_reference_cells_are_hyper_cube();
-    AssertThrow(hypercubes || choice != "Q1 cells",
-                ExcBadParameter("Linear solver/AMG operator",
-                                choice,
-                                "the mesh has simplex cells, which are not Q1 "
-                                "cells; use 'tangent' or 'automatic'."));
-    if (!hypercubes)
-      return;
     for (const auto &cell : discretization.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         owned_cells.push_back(cell);
