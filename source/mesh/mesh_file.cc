@@ -314,8 +314,7 @@ namespace pg
                                   "tetrahedra, prisms or pyramids") +
                       ", and pg's cells are Q1 elements or meshfree cells "
                       "whose vertices are the particles: " +
-                      (dim == 2 ? "quadrilaterals" : "hexahedra") +
-                      " only",
+                      (dim == 2 ? "quadrilaterals" : "hexahedra") + " only",
                     "Recombine the mesh into " +
                       std::string(dim == 2 ? "quadrilaterals" : "hexahedra") +
                       " (Gmsh: 'Mesh.RecombineAll = 1' with "
