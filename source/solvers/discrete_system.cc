@@ -15,7 +15,6 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparsity_tools.h>
-#include <deal.II/lac/trilinos_index_access.h>
 
 namespace pg
 {
@@ -654,48 +653,19 @@ namespace pg
     Timer                 timer;
     LinearAlgebra::Vector residual(discretization.owned_dofs, comm),
       unbalanced(discretization.owned_dofs, comm);
-    const std::string failed =
-      amg_assembler->assemble(solution, &amg_matrix, residual, unbalanced);
     // e.g. an inverted Q1 cell where the families are fine: the tangent
-    if (Utilities::MPI::logical_or(!failed.empty(), comm))
-      {
-        time_amg_operator += timer.wall_time();
-        return nullptr;
-      }
+    const bool failed = Utilities::MPI::logical_or(
+      !amg_assembler->assemble(solution, &amg_matrix, residual, unbalanced)
+         .empty(),
+      comm);
     // Newmark's c0 M: its nonzeros (Q1 cells' consistent mass, the
-    // particles' lumped one) lie in the Q1 pattern; the mass is stored in
-    // the pattern of the tangent, whose other entries are zero
-    // (read through Epetra row views: deal.II's row iterators copy a row
-    // on every construction)
-    if (tangent_mass != nullptr)
-      {
-        const Epetra_CrsMatrix &M = tangent_mass->trilinos_matrix();
-        std::vector<types::global_dof_index> columns;
-        std::vector<double>                  values;
-        for (int r = 0; r < M.NumMyRows(); ++r)
-          {
-            int     n_entries;
-            double *row_values;
-            int    *row_columns;
-            M.ExtractMyRowView(r, n_entries, row_values, row_columns);
-            columns.clear();
-            values.clear();
-            for (int i = 0; i < n_entries; ++i)
-              if (row_values[i] != 0.)
-                {
-                  columns.push_back(
-                    TrilinosWrappers::global_column_index(M, row_columns[i]));
-                  values.push_back(tangent_mass_factor * row_values[i]);
-                }
-            amg_matrix.add(TrilinosWrappers::global_row_index(M, r),
-                           columns.size(),
-                           columns.data(),
-                           values.data());
-          }
-        amg_matrix.compress(VectorOperation::add);
-      }
+    // particles' lumped one) lie in the Q1 pattern; it is stored in the
+    // pattern of the tangent, whose other entries are zero, and Trilinos'
+    // add() skips those
+    if (!failed && tangent_mass != nullptr)
+      amg_matrix.add(tangent_mass_factor, *tangent_mass);
     time_amg_operator += timer.wall_time();
-    return &amg_matrix;
+    return failed ? nullptr : &amg_matrix;
   }
 
 
