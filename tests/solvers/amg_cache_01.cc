@@ -11,36 +11,12 @@
 // builds one. Every solution
 // is checked against its residual |b - M x| <= 1e-10 |b|.
 
-#include <pg/solvers/linear_solver.h>
-
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q1.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/numerics/matrix_creator.h>
 
 #include "../tests.h"
+#include "laplace_fixture.h"
 
 using namespace pg;
-
-namespace
-{
-  /** |b - M x| / |b| */
-  double
-  relative_residual(const pg::LinearAlgebra::SparseMatrix &M,
-                    const pg::LinearAlgebra::Vector       &x,
-                    const pg::LinearAlgebra::Vector       &b)
-  {
-    pg::LinearAlgebra::Vector r(b);
-    M.vmult(r, x);
-    r -= b;
-    return r.l2_norm() / b.l2_norm();
-  }
-} // namespace
 
 
 int
@@ -49,40 +25,19 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
 
-  Triangulation<2> tria;
-  GridGenerator::subdivided_hyper_cube(tria, 48);
-  const FE_Q<2> fe(1);
-  DoFHandler<2> dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  const IndexSet owned = dof_handler.locally_owned_dofs();
-
-  DynamicSparsityPattern dsp(dof_handler.n_dofs());
-  DoFTools::make_sparsity_pattern(dof_handler, dsp);
-  pg::LinearAlgebra::SparseMatrix matrix, mass;
-  matrix.reinit(owned, owned, dsp, MPI_COMM_WORLD);
-  mass.reinit(owned, owned, dsp, MPI_COMM_WORLD);
-  MatrixCreator::create_laplace_matrix(dof_handler, QGauss<2>(2), matrix);
-  MatrixCreator::create_mass_matrix(dof_handler, QGauss<2>(2), mass);
-  matrix.add(1., mass);
-
-  pg::LinearAlgebra::Vector rhs(owned, MPI_COMM_WORLD), x(rhs);
-  for (const auto i : owned)
-    rhs[i] = 1. + 0.001 * i;
-  rhs.compress(VectorOperation::insert);
-
-  Parameters::LinearSolver parameters;
-  parameters.type            = "cg";
-  parameters.tolerance       = 1e-10;
-  parameters.near_null_space = "translations";
-  parameters.vc_solver       = "automatic";
-  parameters.reuse_amg       = true;
+  LaplaceFixture            problem;
+  const auto               &dof_handler = problem.dof_handler;
+  const auto               &rhs         = problem.rhs;
+  auto                     &matrix      = problem.matrix;
+  auto                     &parameters  = problem.parameters;
+  pg::LinearAlgebra::Vector x(rhs);
 
   AMGCache   cache;
   const auto solve = [&](const pg::LinearAlgebra::SparseMatrix &M) {
     x = 0;
     const unsigned int its =
       solve_linear_system(parameters, dof_handler, M, x, rhs, &cache);
-    print_bound("  |b - M x| / |b|", relative_residual(M, x, rhs), 1e-10);
+    print_bound("  |b - M x| / |b|", problem.relative_residual(M, x), 1e-10);
     return its;
   };
 

@@ -15,18 +15,8 @@
 //     those of case 1; 2 hierarchies).
 // Every solution is checked against its residual |b - M x| <= 1e-10 |b|.
 
-#include <pg/solvers/linear_solver.h>
-
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/tria.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/numerics/matrix_creator.h>
-
 #include "../tests.h"
+#include "laplace_fixture.h"
 
 using namespace pg;
 
@@ -36,22 +26,11 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog();
 
-  Triangulation<2> tria;
-  GridGenerator::subdivided_hyper_cube(tria, 48);
-  const FE_Q<2> fe(1);
-  DoFHandler<2> dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  const IndexSet owned = dof_handler.locally_owned_dofs();
-
-  DynamicSparsityPattern dsp(dof_handler.n_dofs());
-  DoFTools::make_sparsity_pattern(dof_handler, dsp);
-  pg::LinearAlgebra::SparseMatrix A, L, mass, scaled;
-  for (auto *M : {&A, &L, &mass, &scaled})
-    M->reinit(owned, owned, dsp, MPI_COMM_WORLD);
-  MatrixCreator::create_laplace_matrix(dof_handler, QGauss<2>(2), L);
-  MatrixCreator::create_mass_matrix(dof_handler, QGauss<2>(2), mass);
-  A.copy_from(L);
-  A.add(1., mass);
+  LaplaceFixture problem;
+  const auto    &A = problem.matrix;
+  const auto    &L = problem.laplace;
+  // D A D with D_ii = 10^(4 frac(0.618 i))
+  pg::LinearAlgebra::SparseMatrix scaled;
   scaled.copy_from(A);
   const auto d = [](const types::global_dof_index i) {
     const double x = 0.618034 * i;
@@ -59,17 +38,10 @@ main(int argc, char **argv)
   };
   for (auto entry = scaled.begin(); entry != scaled.end(); ++entry)
     entry->value() *= d(entry->row()) * d(entry->column());
-  pg::LinearAlgebra::Vector rhs(owned, MPI_COMM_WORLD), x(rhs);
-  for (const auto i : owned)
-    rhs[i] = 1. + 0.001 * i;
-  rhs.compress(VectorOperation::insert);
 
-  Parameters::LinearSolver parameters;
-  parameters.type            = "cg";
-  parameters.tolerance       = 1e-10;
-  parameters.near_null_space = "translations";
-  parameters.vc_solver       = "automatic";
-  parameters.reuse_amg       = true;
+  const auto               &rhs        = problem.rhs;
+  const auto               &parameters = problem.parameters;
+  pg::LinearAlgebra::Vector x(rhs);
 
   unsigned int calls = 0;
   const auto   solve = [&](const pg::LinearAlgebra::SparseMatrix &M,
@@ -83,17 +55,14 @@ main(int argc, char **argv)
         ++calls;
         return hierarchy;
       };
-    const unsigned int        its = solve_linear_system(parameters,
-                                                 dof_handler,
+    const unsigned int its = solve_linear_system(parameters,
+                                                 problem.dof_handler,
                                                  M,
                                                  x,
                                                  rhs,
                                                  &cache,
                                                  amg_operator);
-    pg::LinearAlgebra::Vector r(rhs);
-    M.vmult(r, x);
-    r -= rhs;
-    print_bound("  |b - M x| / |b|", r.l2_norm() / rhs.l2_norm(), 1e-10);
+    print_bound("  |b - M x| / |b|", problem.relative_residual(M, x), 1e-10);
     return its;
   };
 
