@@ -42,7 +42,7 @@ end"
       } > "$WORK/case.prm"
       rm -rf "$WORK/out"
       if ! "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1; then
-        echo "| $model | $solver | $n | - | $nullspace | failed: $(tail -1 "$WORK/log") |"
+        echo "| $model | $solver | $n | - | $nullspace | failed: $(failure_reason "$WORK/log") |"
         continue
       fi
       s="$WORK/out/summary.json"

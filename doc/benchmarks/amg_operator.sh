@@ -50,7 +50,7 @@ end"
       } > "$WORK/case.prm"
       rm -rf "$WORK/out"
       if ! "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1; then
-        echo "| ${model%%:*} | $n | - | $operator | failed: $(grep -A1 -m1 'Exception on processing' "$WORK/log" | tail -1 | cut -c1-160) |"
+        echo "| ${model%%:*} | $n | - | $operator | failed: $(failure_reason "$WORK/log") |"
         continue
       fi
       s="$WORK/out/summary.json"

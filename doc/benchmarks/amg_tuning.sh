@@ -54,7 +54,7 @@ end"
       } > "$WORK/case.prm"
       rm -rf "$WORK/out"
       if ! "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1; then
-        echo "| ${model%%:*} | $n | - | $variant | failed: $(grep -m1 -i 'error\|did not\|must' "$WORK/log" | cut -c1-120) |"
+        echo "| ${model%%:*} | $n | - | $variant | failed: $(failure_reason "$WORK/log") |"
         continue
       fi
       s="$WORK/out/summary.json"

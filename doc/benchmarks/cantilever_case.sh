@@ -63,3 +63,10 @@ END
 summary_number() {
   grep -o "\"$2\": [0-9.e+-]*" "$1" | head -1 | awk '{ print $2 }'
 }
+
+# failure_reason LOG: the first line of the message with which pg_solve
+# stopped (the line after deal.II's "Exception on processing:"), at most
+# 160 characters, for the "failed:" cell of a table row
+failure_reason() {
+  grep -A1 -m1 'Exception on processing' "$1" | tail -1 | cut -c1-160
+}

@@ -52,7 +52,7 @@ for n in $SIZES; do
       printf 'subsection Linear solver\n  set VC solver = %s\nend\n' "$solver"
     } > "$WORK/case.prm"
     rm -rf "$WORK/out"
-    "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1 || { echo "| cantilever $n | $solver | failed: $(tail -1 "$WORK/log") |"; continue; }
+    "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1 || { echo "| cantilever $n | $solver | failed: $(failure_reason "$WORK/log") |"; continue; }
     row "cantilever $n x $m x $m" "$solver" tip
   done
 done
@@ -65,7 +65,7 @@ subsection Linear solver
 end
 END
     rm -rf "$WORK/out"
-    "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1 || { echo "| tensile bar | $solver | failed: $(tail -1 "$WORK/log") |"; continue; }
+    "$PG" "$WORK/case.prm" > "$WORK/log" 2>&1 || { echo "| tensile bar | $solver | failed: $(failure_reason "$WORK/log") |"; continue; }
     row "Peridigm's tensile bar" "$solver" "gauge top"
   done
 fi
