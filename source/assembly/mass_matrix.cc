@@ -28,14 +28,14 @@ namespace pg
     auto           &inverse_mass   = masses.inverse;
     // Lumped: every rank sums over all cells (the shared triangulation
     // knows them), so the full vector needs no communication.
-    Vector<double>     m(dof_handler.n_dofs());
-    FEValues<dim>      fe_values(fe_scalar,
+    Vector<double> m(dof_handler.n_dofs());
+    // the DoFs of the extra nodal fields (pressure, dilatation): no mass
+    std::vector<bool>                    massless(dof_handler.n_dofs(), false);
+    FEValues<dim>                        fe_values(fe_scalar,
                             QGauss<dim>(2),
                             update_values | update_JxW_values);
-    const unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    std::vector<types::global_dof_index> dofs(
-      dof_handler.get_fe().n_dofs_per_cell());
-    FullMatrix<double> local(dofs.size(), dofs.size());
+    std::vector<types::global_dof_index> dofs;
+    FullMatrix<double>                   local;
     if (consistent)
       {
         mass_matrix.copy_from(pattern);
@@ -47,25 +47,37 @@ namespace pg
       {
         fe_values.reinit(
           typename Triangulation<dim>::active_cell_iterator(cell));
+        // Components 0 ... dim-1 are the displacement (FieldLayout); for
+        // FE_Q(1) bases the index within the base element is the vertex.
+        const FiniteElement<dim> &fe = cell->get_fe();
+        dofs.resize(fe.n_dofs_per_cell());
         cell->get_dof_indices(dofs);
-        local             = 0;
+        local.reinit(dofs.size(), dofs.size());
         const bool lumped = !consistent || meshfree[cell->active_cell_index()];
-        for (unsigned int a = 0; a < n_vertices; ++a)
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              const double w =
-                rho * fe_values.shape_value(a, q) * fe_values.JxW(q);
-              for (unsigned int c = 0; c < dim; ++c)
-                m[dofs[a * dim + c]] += w;
-              if (lumped)
-                for (unsigned int c = 0; c < dim; ++c)
-                  local(a * dim + c, a * dim + c) += w;
-              else
-                for (unsigned int b = 0; b < n_vertices; ++b)
-                  for (unsigned int c = 0; c < dim; ++c)
-                    local(a * dim + c, b * dim + c) +=
-                      w * fe_values.shape_value(b, q);
-            }
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          {
+            const auto [c, a] = fe.system_to_component_index(i);
+            if (c >= dim)
+              {
+                massless[dofs[i]] = true;
+                continue;
+              }
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                const double w =
+                  rho * fe_values.shape_value(a, q) * fe_values.JxW(q);
+                m[dofs[i]] += w;
+                if (lumped)
+                  local(i, i) += w;
+                else
+                  for (unsigned int j = 0; j < dofs.size(); ++j)
+                    {
+                      const auto [c_j, b] = fe.system_to_component_index(j);
+                      if (c_j == c)
+                        local(i, j) += w * fe_values.shape_value(b, q);
+                    }
+              }
+          }
         if (consistent && cell->is_locally_owned())
           {
             mass_matrix.add(dofs, local);
@@ -90,8 +102,15 @@ namespace pg
       }
     lumped_mass.reinit(owned_dofs, comm);
     inverse_mass.reinit(owned_dofs, comm);
+    masses.massless.clear();
+    masses.massless.set_size(dof_handler.n_dofs());
     for (const auto i : owned_dofs)
       {
+        if (massless[i])
+          {
+            masses.massless.add_index(i);
+            continue;
+          }
         AssertThrow(m[i] > 0,
                     ExcBadParameter("Material/Density",
                                     std::to_string(rho),

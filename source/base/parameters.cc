@@ -419,31 +419,50 @@ namespace pg
                           "saddle-point matrix that CG and GMRES with "
                           "algebraic multigrid do not solve. Set 'Type = "
                           "direct'."));
+          const std::string unknowns =
+            code.incompressible() ?
+              std::string("> (a global pressure per family)") :
+              std::string("> (nodal pressure and dilatation)");
           AssertThrow(
-            analysis.type != "inf-sup" && !time.dynamic(),
+            analysis.type != "inf-sup",
             ExcBadParameter(
-              analysis.type != "static" ? "Analysis/Type" : "Time/Integrator",
-              analysis.type != "static" ? analysis.type : time.integrator,
-              "the formulation <" + code.text +
+              "Analysis/Type",
+              analysis.type,
+              "the formulation <" + code.text + unknowns +
+                " has no inf-sup test of its own: " +
                 (code.incompressible() ?
-                   std::string("> (a global pressure per family)") :
-                   std::string("> (nodal pressure and dilatation)")) +
-                " is available "
-                "for quasi-static load stepping and eigenmodes only so far. "
-                "Use 'Type = static' without an integrator, or the "
-                "condensed mixed formulation 'VCPBG V5sn UnlP0'" +
-                (analysis.type != "inf-sup" ?
-                   std::string() :
-                 code.incompressible() ?
-                   std::string("; the inf-sup test of IUnlP0 is that of "
+                   std::string("the inf-sup test of IUnlP0 is that of "
                                "UnlP0, on its displacement formulation: "
                                "'Formulation = BCPBG Unl' with 'Pressure "
-                               "space = P0'") :
-                   std::string("; the inf-sup test of Unl+P1C (U2P1C) runs "
+                               "space = P0'.") :
+                   std::string("the inf-sup test of Unl+P1C (U2P1C) runs "
                                "on its displacement formulation: "
                                "'Formulation = BCPBG Unl' ('PBG U2') with "
-                               "'Pressure space = P1C+bubble' ('P1C')")) +
-                "."));
+                               "'Pressure space = P1C+bubble' ('P1C')."))));
+          // p (and Theta) have no mass: a differential-algebraic system
+          AssertThrow(
+            time.integrator != "leapfrog",
+            ExcBadParameter("Time/Integrator",
+                            time.integrator,
+                            "the formulation <" + code.text + unknowns +
+                              " has pressure unknowns without mass (a "
+                              "differential-algebraic system), which an "
+                              "explicit integrator cannot advance. Use "
+                              "'Integrator = newmark' with a 'Time step', or "
+                              "the condensed mixed formulation 'VCPBG V5sn "
+                              "UnlP0' with leapfrog."));
+          AssertThrow(
+            !time.dynamic() || time.time_step > 0,
+            ExcBadParameter("Time/Time step",
+                            "0",
+                            "the automatic step is the central-difference "
+                            "limit 2/omega_max of M^-1 K, which does not exist "
+                            "when the pressure unknowns of the formulation <" +
+                              code.text +
+                              "> have no mass. Set a step: Newmark is "
+                              "unconditionally stable, and 20 steps per period "
+                              "of the slowest mode you want to resolve are a "
+                              "start."));
         }
     }
 

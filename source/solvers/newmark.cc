@@ -30,7 +30,26 @@ namespace pg
                                 LinearAlgebra::Vector &a) const
   {
     a = 0;
-    system.solve(masses.condensed, a, system.residual());
+    if (Utilities::MPI::sum(masses.massless.n_elements(),
+                            system.communicator()) == 0)
+      system.solve(masses.condensed, a, system.residual());
+    else
+      {
+        // The pressure unknowns have no mass (a differential-algebraic
+        // system): their rows get a unit diagonal and a zero right-hand
+        // side, so that a = 0 there and M a = r on the displacement.
+        LinearAlgebra::SparseMatrix mass;
+        mass.copy_from(masses.condensed);
+        LinearAlgebra::Vector r(system.residual());
+        for (const auto i : masses.massless)
+          {
+            mass.set(i, i, 1.);
+            r(i) = 0;
+          }
+        mass.compress(VectorOperation::insert);
+        r.compress(VectorOperation::insert);
+        system.solve(mass, a, r);
+      }
     system.homogeneous_constraints().distribute(a);
   }
 
@@ -104,6 +123,15 @@ namespace pg
       }
     v.add(dt * (1. - gamma), a, dt * gamma, a_new);
     a = a_new;
+    // Massless unknowns (pressure, dilatation) are algebraic: no velocity
+    // or acceleration, so that the next predictor keeps their values.
+    for (const auto i : masses.massless)
+      {
+        v(i) = 0;
+        a(i) = 0;
+      }
+    v.compress(VectorOperation::insert);
+    a.compress(VectorOperation::insert);
     return true;
   }
 } // namespace pg

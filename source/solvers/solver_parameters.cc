@@ -340,6 +340,8 @@ namespace pg
           "eigenvalue of M^-1 K (power iteration with the lumped mass and "
           "the tangent of the initial state), shortened so that the steps "
           "end at 'End time'. Leapfrog rejects a step above 2 / omega_max. "
+          "The mixed codes with pressure unknowns (U2P1C, Unl+P1C, IUnlP0) "
+          "have no mass on them and need a step > 0 (and 'newmark'). "
           "Units: time.");
         prm.declare_entry("Safety factor",
                           "0.8",

@@ -38,18 +38,32 @@ namespace pg
       const std::string failure = system.assemble_residual(true);
       AssertThrow(failure.empty(), ExcMessage(failure));
     }
-    const double omega2 =
-      TimeIntegration::largest_eigenvalue(system.tangent(), masses.inverse);
-    const double dt_stable  = omega2 > 0 ? 2. / std::sqrt(omega2) : T;
-    result.stable_time_step = dt_stable;
-    {
-      std::ostringstream line;
-      line << std::setprecision(4) << "  time integrator: " << time.integrator
-           << ", stable leapfrog step 2/omega_max = " << dt_stable
-           << " (omega_max = " << std::sqrt(omega2) << ")";
-      out << line.str() << std::endl;
-    }
-    const auto text = [](const double x) {
+    if (Utilities::MPI::sum(masses.massless.n_elements(),
+                            system.communicator()) > 0)
+      {
+        // Pressure unknowns without mass: no central-difference limit
+        // (Parameters require 'Time step' > 0 and Newmark for them).
+        AssertThrow(!explicit_ && time.time_step > 0, ExcInternalError());
+        result.stable_time_step = 0;
+        out << "  time integrator: " << time.integrator
+            << " (the pressure unknowns have no mass: no central-difference "
+               "step limit)"
+            << std::endl;
+      }
+    else
+      {
+        const double omega2 =
+          TimeIntegration::largest_eigenvalue(system.tangent(), masses.inverse);
+        const double dt_stable  = omega2 > 0 ? 2. / std::sqrt(omega2) : T;
+        result.stable_time_step = dt_stable;
+        std::ostringstream line;
+        line << std::setprecision(4) << "  time integrator: " << time.integrator
+             << ", stable leapfrog step 2/omega_max = " << dt_stable
+             << " (omega_max = " << std::sqrt(omega2) << ")";
+        out << line.str() << std::endl;
+      }
+    const double dt_stable = result.stable_time_step;
+    const auto   text      = [](const double x) {
       std::ostringstream s;
       s << std::setprecision(4) << x;
       return s.str();

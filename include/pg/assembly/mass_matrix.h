@@ -20,7 +20,9 @@ namespace pg
    * mass matrices in the sparsity of @p pattern: the consistent Q1 mass on
    * finite element cells and the lumped one on meshfree cells (@p meshfree
    * per active cell), unconstrained (masses.consistent) and condensed
-   * (masses.condensed). Throws if @p rho is not positive.
+   * (masses.condensed). Only the displacement components 0 ... dim-1 have
+   * mass; the DoFs of the extra nodal fields (FieldLayout) go to
+   * masses.massless. Throws if @p rho is not positive.
    */
   template <int dim>
   void

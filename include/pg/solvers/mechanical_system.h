@@ -17,12 +17,17 @@ namespace pg
    * every DoF (rho_0 V^k at a particle), the inverse of its diagonal
    * condensed with the homogeneous constraints (0 at constrained DoFs),
    * and, for Newmark, the consistent Q1 mass on finite element cells with
-   * the particles' lumped one, unconstrained and condensed.
+   * the particles' lumped one, unconstrained and condensed. The nodal
+   * pressure and dilatation of U2P1C, Unl+P1C and the family pressure of
+   * IUnlP0 carry no mass (a differential-algebraic system): their rows are
+   * zero in every mass, and @p massless lists them.
    */
   struct MassMatrices
   {
     LinearAlgebra::Vector       lumped, inverse;
     LinearAlgebra::SparseMatrix consistent, condensed;
+    /** The locally owned DoFs without mass (the extra nodal fields). */
+    IndexSet massless;
   };
 
   /**
