@@ -284,6 +284,7 @@ namespace pg
                 ->fe_collection()[FieldLayout<dim>::fe_cell_index] :
                                  &discretization.fe;
     v.fe_scalar              = &discretization.fe_scalar;
+    v.field_layout           = discretization.field_layout.get();
     v.meshfree               = &discretization.meshfree;
     v.particles              = &discretization.particles;
     v.families               = &discretization.families;

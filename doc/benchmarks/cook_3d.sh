@@ -20,7 +20,10 @@
 #       Newton iterations each (cook_3d/results_panel_b_equilibrium.txt).
 # Writes doc/benchmarks/cook_3d/results.txt and doc/figures/cook_3d.png
 # (PLOT_ONLY=1: redraw from an existing results.txt; ONLY=<label>: run one
-# method and append its rows; PANEL=a or b: run one panel and append).
+# method and append its rows; PANEL=a or b: run one panel and append;
+# SIZES_A="32 48 ...": panel a's n instead of 4 8 12 16 24, as for the
+# large runs of the wall time against DoFs, e.g.
+#   PANEL=a ONLY="FEM Q1" SIZES_A="32 48 64 88 116" sh doc/benchmarks/cook_3d.sh).
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/cook_3d.sh build-release/applications/pg_solve/pg_solve
 set -e
@@ -86,7 +89,7 @@ if [ "${PANEL:-a}" = a ]; then
 for n in 20 30 40; do
   run a reference FEM $n 0 0.357142857142857143 cg
 done
-for n in 4 8 12 16 24; do
+for n in ${SIZES_A:-4 8 12 16 24}; do
   run a "FEM Q1" FEM $n 0.3 0.357142857142857143 cg
   run a "BCPBG Unl" "BCPBG Unl" $n 0.3 0.357142857142857143 cg
   run a "VCBCPBG V5sn Unl" "VCBCPBG V5sn Unl" $n 0.3 0.357142857142857143 cg

@@ -1,8 +1,8 @@
 #include <pg/analysis/eigenmode_analysis.h>
 #include <pg/analysis/eigenmodes.h>
+#include <pg/dofs/field_layout.h>
 
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/component_mask.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,15 +26,11 @@ namespace pg
       // U2P1C, Unl+P1C, IUnlP0: the eigenvalues of the displacement
       // stiffness, their nodal or family pressures eliminated
       std::vector<bool> is_displacement;
-      if (access.formulation.n_nodal_fields() > 0)
+      if (const FieldLayout<dim> *layout = this->view().field_layout)
         {
           const DoFHandler<dim> &dof_handler = *this->view().dof_handler;
-          ComponentMask displacement(dim + access.formulation.n_nodal_fields(),
-                                     false);
-          for (unsigned int c = 0; c < dim; ++c)
-            displacement.set(c, true);
-          const IndexSet u_dofs =
-            DoFTools::extract_dofs(dof_handler, displacement);
+          const IndexSet         u_dofs =
+            DoFTools::extract_dofs(dof_handler, layout->displacement_mask());
           is_displacement.resize(dof_handler.n_dofs());
           for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
             is_displacement[i] = u_dofs.is_element(i);

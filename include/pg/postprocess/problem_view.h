@@ -28,6 +28,9 @@
 
 namespace pg
 {
+  template <int dim>
+  class FieldLayout;
+
   /**
    * Postprocessors: what a run reports after each step and at its end
    * (points, lines, reactions, error norms, nodal stresses, statistics,
@@ -86,6 +89,11 @@ namespace pg
        * Meshfree cells may have another element: use cell->get_fe() there.
        */
       const FiniteElement<dim> *fe = nullptr, *fe_scalar = nullptr;
+      /**
+       * The layout of u and the extra nodal fields (U2P1C, Unl+P1C,
+       * IUnlP0); null without extra fields.
+       */
+      const FieldLayout<dim> *field_layout = nullptr;
       /** Meshfree flag of every active cell (by active cell index). */
       const std::vector<bool> *meshfree = nullptr;
 
