@@ -53,9 +53,16 @@ namespace pg
       const unsigned int        n_vertices = triangulation.n_vertices();
       std::vector<Tensor<2, 3>> fe_stress(n_vertices);
       std::vector<unsigned int> fe_cells(n_vertices, 0);
-      // QTrapezoid's points are the vertices in deal.II's numbering.
+      // QTrapezoid's points are the vertices in deal.II's numbering. At the
+      // corner of a strongly distorted cell F can be inverted although it
+      // is not at the Gauss points the solution was computed with: there
+      // the cell contributes its centre's stress (and nothing if F is
+      // inverted at the centre too).
       FEValues<dim> fe_values(*view.fe, QTrapezoid<dim>(), update_gradients);
-      std::vector<Tensor<2, dim>> gradients(fe_values.n_quadrature_points);
+      FEValues<dim> centre_values(*view.fe, QMidpoint<dim>(), update_gradients);
+      std::vector<Tensor<2, dim>> gradients(fe_values.n_quadrature_points),
+        centre_gradient(1);
+      unsigned int n_centre = 0, n_skipped = 0;
       for (const auto &cell : view.dof_handler->active_cell_iterators())
         if (!meshfree[cell->active_cell_index()])
           {
@@ -64,11 +71,31 @@ namespace pg
               .get_function_gradients(u_all, gradients);
             for (const unsigned int v : cell->vertex_indices())
               {
-                fe_stress[cell->vertex_index(v)] += material.cauchy_stress(
-                  unit_symmetric_tensor<dim>() + gradients[v]);
+                Tensor<2, dim> F = unit_symmetric_tensor<dim>() + gradients[v];
+                if (determinant(F) <= 0)
+                  {
+                    centre_values.reinit(cell);
+                    centre_values[FEValuesExtractors::Vector(0)]
+                      .get_function_gradients(u_all, centre_gradient);
+                    F = unit_symmetric_tensor<dim>() + centre_gradient[0];
+                    if (determinant(F) <= 0)
+                      {
+                        ++n_skipped;
+                        continue;
+                      }
+                    ++n_centre;
+                  }
+                fe_stress[cell->vertex_index(v)] += material.cauchy_stress(F);
                 ++fe_cells[cell->vertex_index(v)];
               }
           }
+      if (n_centre + n_skipped > 0)
+        *view.pcout << "  nodal stresses: F is inverted (J <= 0) at "
+                    << n_centre + n_skipped
+                    << " corner(s) of distorted FE cells, where the Gauss "
+                       "points are not; the cell's centre value is used "
+                       "there (inverted at the centre too: "
+                    << n_skipped << ")" << std::endl;
       std::vector<int> particle_at(n_vertices, -1);
       for (unsigned int k = 0; k < particles.n_particles(); ++k)
         particle_at[particles.vertex(k)] = k;
@@ -90,7 +117,9 @@ namespace pg
       const bool with_exact     = prm.compute_errors && !incompressible;
       const auto nodal_stress   = [&](const unsigned int vertex) {
         if (particle_at[vertex] < 0)
-          return Tensor<2, 3>(fe_stress[vertex] / fe_cells[vertex]);
+          return fe_cells[vertex] > 0 ?
+                     Tensor<2, 3>(fe_stress[vertex] / fe_cells[vertex]) :
+                     Tensor<2, 3>();
         const unsigned int k     = particle_at[vertex];
         Tensor<2, 3>       sigma = material.cauchy_stress(particle_F[k]);
         if (incompressible)
