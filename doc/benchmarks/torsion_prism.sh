@@ -11,7 +11,9 @@
 # to change it: the quadratic U2 needs 10 members in 3-D, more than 1.51 h
 # gives at the corners). The load step starts with 'Predictor' = linearized
 # (default) or 'boundary values'. FORMULATIONS="<code>|<code>...": run
-# these only; APPEND=1: append to the results instead of starting them.
+# these only; APPEND=1: append to the results instead of starting them;
+# LO=<deg> HI=<deg>: bisect between these (default 0 and 128; LO must
+# converge and HI fail, which the script does not check).
 # TURN=1: the fewest equal load steps for a full turn (see below), into
 # doc/benchmarks/torsion_prism/turn_N<N>_<predictor>.txt.
 # Writes doc/benchmarks/torsion_prism/results_N<N>_<predictor>.txt.
@@ -122,8 +124,8 @@ fi
 [ -n "$FORMULATIONS" ] ||
   FORMULATIONS="FEM|FEM H1P0|VCBCPPG V3sn Unl|VCBCPPG V3sn UnlP0|VCBCPBG V5sn Unl|VCBCPBG V5sn UnlP0|VCPBG V5sn U2|VCPBG V5sn U2P1"
 echo "$FORMULATIONS" | tr '|' '\n' | while read -r f; do
-  lo=0
-  hi=128
+  lo=${LO:-0}
+  hi=${HI:-128}
   while [ $((hi - lo)) -gt 1 ]; do
     mid=$(((lo + hi) / 2))
     if converges "$f" $mid; then

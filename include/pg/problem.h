@@ -103,9 +103,14 @@ namespace pg
        * AMG'; counted from the start of this run, also after a restart).
        */
       unsigned int amg_builds = 0;
-      double       fe_seconds = 0, family_seconds = 0;
-      double       fe_entries = 0, family_entries = 0;
-      double       fe_flops = 0, family_flops = 0;
+      /**
+       * 'AMG operator = automatic': a trial solve found the tangent's
+       * hierarchy faster than the Q1 cells', which then were dropped.
+       */
+      bool   amg_operator_rejected = false;
+      double fe_seconds = 0, family_seconds = 0;
+      double fe_entries = 0, family_entries = 0;
+      double fe_flops = 0, family_flops = 0;
     } assembly_cost;
     /**
      * Wall seconds: mesh (generation, refinement, distortion), setup (DoFs,

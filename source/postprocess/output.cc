@@ -382,6 +382,8 @@ namespace pg
         << ", \"n_solves\": " << c.n_solves
         << ", \"linear_iterations\": " << c.linear_iterations
         << ", \"amg_builds\": " << c.amg_builds
+        << ", \"amg_operator_rejected\": "
+        << (c.amg_operator_rejected ? "true" : "false")
         << ", \"fe_seconds\": " << json_number(c.fe_seconds)
         << ", \"family_seconds\": " << json_number(c.family_seconds)
         << ", \"fe_entries\": " << json_number(c.fe_entries)

@@ -50,7 +50,12 @@ namespace pg
       if (cost.amg_builds > 0)
         *view.pcout << "  linear solves: " << cost.n_solves << " with "
                     << cost.linear_iterations << " Krylov iterations and "
-                    << cost.amg_builds << " ML hierarchies" << std::endl;
+                    << cost.amg_builds << " ML hierarchies"
+                    << (cost.amg_operator_rejected ?
+                          " (AMG operator: the tangent's hierarchy, faster "
+                          "than the Q1 cells' in a trial solve)" :
+                          "")
+                    << std::endl;
     }
 
 

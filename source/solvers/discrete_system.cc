@@ -573,7 +573,8 @@ namespace pg
       }
     time_solve += timer.wall_time();
     ++summary.assembly_cost.n_solves;
-    summary.assembly_cost.amg_builds = amg_cache.n_builds;
+    summary.assembly_cost.amg_builds            = amg_cache.n_builds;
+    summary.assembly_cost.amg_operator_rejected = amg_cache.operator_rejected;
     zero_constraints.distribute(update);
     energy = update * rhs;
     solution_owned += update;

@@ -1,6 +1,7 @@
 #include <pg/base/exceptions.h>
 #include <pg/solvers/linear_solver.h>
 
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
@@ -278,13 +279,56 @@ namespace pg
     // converge, from the tangent. Adds the iterations of a failed attempt
     // to @p failed_iterations.
     const LinearAlgebra::Vector start = solution;
-    const auto with_new_hierarchy     = [&](unsigned int failed_iterations) {
+    AMGCache                   &state = (cache != nullptr ? *cache : own);
+    // 'automatic': a Q1 hierarchy that converges slowly is tried once
+    // against the tangent's on the same system; the faster one stays
+    const auto trial = [&](const unsigned int q1_iterations,
+                           const double       q1_seconds) {
+      state.operator_tried                                           = true;
+      const LinearAlgebra::Vector                        q1_solution = solution;
+      std::unique_ptr<TrilinosWrappers::PreconditionAMG> q1_amg =
+        std::move(amg.amg);
+      solution = start;
+      Timer timer;
+      try
+        {
+          build(matrix);
+          const unsigned int iterations = krylov(q1_iterations);
+          if (timer.wall_time() < q1_seconds)
+            {
+              state.operator_rejected = true;
+              amg.first_iterations    = iterations;
+              return q1_iterations + iterations;
+            }
+          amg.amg              = std::move(q1_amg);
+          amg.matrix           = &matrix;
+          amg.first_iterations = q1_iterations;
+          solution             = q1_solution;
+          return q1_iterations + iterations;
+        }
+      catch (const SolverControl::NoConvergence &failure)
+        {
+          amg.amg              = std::move(q1_amg);
+          amg.matrix           = &matrix;
+          amg.first_iterations = q1_iterations;
+          solution             = q1_solution;
+          return q1_iterations + failure.last_step;
+        }
+    };
+    const auto with_new_hierarchy = [&](unsigned int failed_iterations) {
       if (const LinearAlgebra::SparseMatrix *auxiliary =
-            (amg_operator ? amg_operator() : nullptr))
+            (amg_operator && !state.operator_rejected ? amg_operator() :
+                                                        nullptr))
         try
           {
+            Timer timer;
             build(*auxiliary);
             amg.first_iterations = krylov(1000);
+            if (parameters.amg_operator == "automatic" && cache != nullptr &&
+                !state.operator_tried &&
+                amg.first_iterations > operator_trial_iterations)
+              return failed_iterations +
+                     trial(amg.first_iterations, timer.wall_time());
             return failed_iterations + amg.first_iterations;
           }
         catch (const SolverControl::NoConvergence &failure)

@@ -56,8 +56,21 @@ namespace pg
    * returns ('AMG operator = Q1 cells'; it must outlive the hierarchy, i.e.
    * the cache), and from @p matrix where it returns nullptr or where the
    * solve with it does not converge in 1000 iterations (the solve is then
-   * repeated).
+   * repeated). With 'AMG operator = automatic' and a cache, the first solve
+   * whose Q1 hierarchy needs more than #operator_trial_iterations
+   * iterations is repeated once with the tangent's hierarchy (at most as
+   * many iterations), and the faster of the two in wall time is kept for
+   * the rest of the run (AMGCache::operator_rejected).
    */
+  /**
+   * Iterations of a first solve with the Q1 cells' hierarchy above which
+   * 'AMG operator = automatic' tries the tangent's: on the cantilevers and
+   * the tensile bar the Q1 hierarchy needed at most 219 and was faster; on
+   * B-12's irregular particles 486 per solve, and the tangent's (85) was
+   * 1.9 times faster (doc/benchmarks/amg_operator.md).
+   */
+  constexpr unsigned int operator_trial_iterations = 250;
+
   template <int dim>
   unsigned int
   solve_linear_system(const Parameters::LinearSolver    &parameters,
@@ -89,6 +102,13 @@ namespace pg
     /** Hierarchies built since construction (for the summary). */
     unsigned int n_builds = 0;
 
+    /**
+     * 'AMG operator = automatic': whether a trial solve found the tangent's
+     * hierarchy faster than the Q1 cells' (solve_linear_system()); then
+     * every later hierarchy is the tangent's.
+     */
+    bool operator_rejected = false;
+
   private:
     template <int dim>
     friend unsigned int
@@ -106,6 +126,8 @@ namespace pg
     const LinearAlgebra::SparseMatrix *matrix = nullptr;
     /** Krylov iterations of the first solve with the hierarchy. */
     unsigned int first_iterations = 0;
+    /** Whether the automatic operator's trial has been made. */
+    bool operator_tried = false;
   };
 
   /**
