@@ -26,10 +26,11 @@ namespace pg
       // U2P1C, Unl+P1C, IUnlP0: the eigenvalues of the displacement
       // stiffness, their nodal or family pressures eliminated
       std::vector<bool> is_displacement;
-      if (const FieldLayout<dim> *layout = this->view().field_layout)
+      if (access.formulation.n_nodal_fields() > 0)
         {
-          const DoFHandler<dim> &dof_handler = *this->view().dof_handler;
-          const IndexSet         u_dofs =
+          const FieldLayout<dim> *layout      = this->view().field_layout;
+          const DoFHandler<dim>  &dof_handler = *this->view().dof_handler;
+          const IndexSet          u_dofs =
             DoFTools::extract_dofs(dof_handler, layout->displacement_mask());
           is_displacement.resize(dof_handler.n_dofs());
           for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
