@@ -1,0 +1,89 @@
+#!/bin/sh
+# A mesh nobody in the project wrote: PETSc's Gmsh test mesh square_quad.msh
+# (Debian package libpetsc3.18-dev-examples, which libdeal.ii-dev pulls in):
+# a strip -0.5 <= x <= 0.5, 0 <= y <= 0.1 of 49 x 4 quadrilaterals, physical
+# lines bottom 2, right 3, top 4, left 5. Used as a slender cantilever,
+# L/h = 10: clamped on the left (5), a dead shear traction 0.01 (total
+# P = 1e-3) on the right (3); plane strain, isochoric-volumetric neo-Hooke,
+# E = 1000, nu = 0.4999. Tip u_y at (0.5, 0.05) for Global refinement
+# 0 ... 3 (4 to 32 cells through the thickness), for FEM Q1, Q1P0 and the
+# displacement and mixed PG codes (default horizon factor, direct solver).
+# Reference: Q1P0 at refinement 4 (with 'Stagnation tolerance = 1e-4':
+# there the direct solve's round-off floor is 7.7e-6 |R_0|). (Timoshenko's beam, P L^3 / (3 E' I) +
+# P L / (kappa G A) with E' = E / (1 - nu^2), kappa = 5/6, gives 3.036e-3
+# without the clamped end's restraint of the cross-section.)
+# Writes doc/benchmarks/slender_cantilever/results.txt.
+# Usage (from the repository root):
+#   sh doc/benchmarks/slender_cantilever.sh build-release/applications/pg_solve/pg_solve
+set -e
+PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
+MESH=${MESH:-/usr/share/petsc/3.18/share/petsc/datafiles/meshes/square_quad.msh}
+[ -r "$MESH" ] || {
+  echo "$MESH not found: install libpetsc3.18-dev-examples or set MESH=<path>"
+  exit 1
+}
+OUT=doc/benchmarks/slender_cantilever
+WORK=$(mktemp -d)
+mkdir -p "$OUT"
+RESULTS="$OUT/results.txt"
+echo "# formulation | global refinement | DoFs | tip u_y | Newton iterations" > "$RESULTS"
+
+run() { # formulation refinement
+  cat > "$WORK/run.prm" <<END
+set Dimension = 2
+subsection Geometry
+  set Mesh              = file
+  set File name         = $MESH
+  set Global refinement = $2
+end
+subsection Discretization
+  set Formulation = $1
+end
+subsection Material
+  set Model           = isochoric-volumetric neo-Hooke
+  set Young's modulus = 1000
+  set Poisson's ratio = 0.4999
+end
+subsection Boundary conditions
+  set Dirichlet = 5: xy
+  set Neumann   = 3
+  subsection Traction
+    set Function expression = 0; 0.01*t
+  end
+end
+subsection Newton
+  set Stagnation tolerance = ${STAGNATION:-1e-6}
+end
+subsection Linear solver
+  set Type = direct
+end
+subsection Output
+  set Directory = $WORK/out
+  set VTU       = false
+  set Points    = tip: 0.5, 0.05
+end
+END
+  if "$PG_SOLVE" "$WORK/run.prm" > "$WORK/run.log" 2>&1; then
+    /usr/bin/env python3 - "$WORK/out/summary.json" "$1" "$2" >> "$RESULTS" <<'END'
+import json, sys
+s = json.load(open(sys.argv[1]))
+print("%s | %s | %d | %.5e | %d" % (sys.argv[2], sys.argv[3], s["n_dofs"],
+      s["points"]["tip"][1], s["newton_iterations"]))
+END
+  else
+    echo "$1 | $2 | - | failed: $(tail -n 2 "$WORK/run.log" | tr '\n' ' ')" >> "$RESULTS"
+  fi
+  tail -n 1 "$RESULTS"
+}
+
+# at 103,000 DoFs the direct solve's round-off floor is 7.7e-6 |R_0|
+STAGNATION=1e-4
+run "FEM Q1P0" 4
+STAGNATION=
+for r in 0 1 2 3; do
+  for f in "FEM" "FEM Q1P0" "VCBCPBG V5sn Unl" "VCBCPBG V5sn UnlP0" \
+    "VCBCPPG V3sn UnlP0" "VCBCPBG V5sn Unl+P1C" "VCPBG V5sn U1SIG"; do
+    run "$f" $r
+  done
+done
+rm -rf "$WORK"
