@@ -1,5 +1,6 @@
 #include <pg/base/exceptions.h>
 #include <pg/solvers/load_stepper.h>
+#include <pg/solvers/newton_solver.h>
 
 #include <algorithm>
 #include <sstream>
@@ -34,6 +35,7 @@ namespace pg
         header << "  load step " << step << ", t = " << target;
         out << header.str() << std::endl;
         unsigned int step_iterations = 0;
+        bool         stalled_before  = false;
         while (t < target - 1e-14)
           {
             const double t_new      = std::min(target, t + dt);
@@ -43,6 +45,7 @@ namespace pg
                 operations.commit();
                 t = t_new;
                 step_iterations += iterations;
+                stalled_before = false;
                 if (cuts > 0 && iterations <= parameters.easy_iterations &&
                     dt < full && t < target - 1e-14)
                   {
@@ -52,6 +55,28 @@ namespace pg
                 continue;
               }
             operations.revert();
+            // A residual that stalls on its round-off floor before and
+            // after a cut stalls after every further cut: the floor is
+            // absolute, and a smaller step only lowers |R_0|.
+            const bool stalled =
+              NewtonSolver::stalled(operations.last_failure());
+            if (stalled && stalled_before)
+              {
+                operations.give_up(step, t);
+                AssertThrow(
+                  false,
+                  ExcMessage(
+                    "Load step " + std::to_string(step) + " stopped after " +
+                    std::to_string(cuts) +
+                    (cuts == 1 ? " step cut" : " step cuts") +
+                    " (last load factor reached: " + std::to_string(t) +
+                    "): Newton's residual stalled before and after a cut, "
+                    "and smaller steps do not lower its round-off floor. " +
+                    operations.last_failure() +
+                    " The results of the converged steps are in '" +
+                    output_directory + "'."));
+              }
+            stalled_before = stalled;
             if (++cuts > parameters.maximum_step_cuts)
               {
                 operations.give_up(step, t);

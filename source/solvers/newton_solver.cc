@@ -6,6 +6,14 @@
 
 namespace pg
 {
+  namespace
+  {
+    // how stall_diagnosis() begins, and what stalled() looks for
+    const std::string stall_message = "Newton stalled between ";
+  } // namespace
+
+
+
   NewtonSolver::NewtonSolver(const Parameters::Newton &parameters)
     : parameters(parameters)
   {}
@@ -116,14 +124,22 @@ namespace pg
     if (!(high <= 1e-2 * reference && high <= 10. * low))
       return "";
     std::ostringstream message;
-    message << std::setprecision(1) << std::scientific
-            << "Newton stalled between " << low / reference << " and "
-            << high / reference << " |R_0| in its last 4 iterations. If "
+    message << std::setprecision(1) << std::scientific << stall_message
+            << low / reference << " and " << high / reference
+            << " |R_0| in its last 4 iterations. If "
             << "that is the round-off floor of a stiff material (e.g. nu "
             << "close to 0.5), set 'Stagnation tolerance' in subsection "
             << "'Newton' above " << high / reference << " (it is "
             << parameters.stagnation_tolerance << ").";
     return message.str();
+  }
+
+
+
+  bool
+  NewtonSolver::stalled(const std::string &failure)
+  {
+    return failure.compare(0, stall_message.size(), stall_message) == 0;
   }
 
 

@@ -28,7 +28,9 @@ namespace pg
                           Patterns::Integer(0, 30),
                           "A load step whose Newton iteration diverges is "
                           "halved and repeated, at most this often per load "
-                          "step.");
+                          "step. A step whose residual stalls on its "
+                          "round-off floor before and after a cut stops the "
+                          "run at once (see 'Newton/Stagnation tolerance').");
         prm.declare_entry("Easy step iterations",
                           "4",
                           Patterns::Integer(0),

@@ -1,7 +1,9 @@
 // LoadStepper with a fake problem whose sub-steps converge (in 3 Newton
 // updates) only if they advance the load factor by at most 0.3: the sub-steps
 // tried, cut and grown again, the commits and reverts, and the message when
-// 'Maximum step cuts' is too small (with give_up called first).
+// 'Maximum step cuts' is too small (with give_up called first); and a
+// problem whose failures are stalls on the round-off floor, which stops
+// after the second stall instead of cutting on.
 
 #include <pg/solvers/load_stepper.h>
 
@@ -16,7 +18,8 @@ namespace
   void
   run(const unsigned int load_steps,
       const unsigned int maximum_cuts,
-      const unsigned int easy_iterations)
+      const unsigned int easy_iterations,
+      const std::string &failure = "too hard")
   {
     Parameters::Loading parameters;
     parameters.load_steps        = load_steps;
@@ -50,7 +53,7 @@ namespace
     operations.give_up = [&](const unsigned int, const double) {
       gave_up = true;
     };
-    operations.last_failure = []() { return std::string("too hard"); };
+    operations.last_failure = [&]() { return failure; };
     deallog << load_steps << " steps, " << maximum_cuts << " cuts, easy "
             << easy_iterations << ":";
     try
@@ -82,4 +85,10 @@ main()
   run(1, 5, 0); // a cut step stays small
   run(2, 5, 4);
   run(1, 1, 4); // too few cuts
+  // stalled before and after the first cut: no second cut
+  run(
+    1,
+    5,
+    4,
+    "Newton stalled between 7.7e-06 and 7.8e-06 |R_0| in its last 4 iterations.");
 }

@@ -17,7 +17,9 @@ namespace pg
    * Newton solve fails is reverted and halved (at most 'Maximum step cuts'
    * times per load step); after a cut, a sub-step that converged in at most
    * 'Easy step iterations' Newton iterations doubles the next one again, up
-   * to the rest of the load step.
+   * to the rest of the load step. Two failed sub-steps in a row whose
+   * residual stalled on its round-off floor (NewtonSolver::stalled()) end
+   * the run at once: a cut cannot lower that floor.
    *
    * The stepper knows nothing of the discretization: the problem gives it
    * the operations below. The state (solution, point history) is committed

@@ -123,6 +123,14 @@ namespace pg
     static void
     report(const Result &result, const ConditionalOStream &out);
 
+    /**
+     * Whether @p failure (a Result::failure) says that the residual stalled
+     * at a small level, i.e. on the round-off floor that a smaller load
+     * step does not lower.
+     */
+    static bool
+    stalled(const std::string &failure);
+
   private:
     /**
      * For a solve that ran out of iterations: if its residual has stalled at
