@@ -16,6 +16,7 @@
 # Usage (from the repository root, on an otherwise idle machine):
 #   sh doc/benchmarks/mixed_cost.sh build-release/applications/pg_solve/pg_solve
 set -e
+. "$(dirname "$0")/torsion_case.sh"
 PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
 CASES=${CASES:-2d 3d}
 OUT=doc/benchmarks/mixed_cost
@@ -63,47 +64,8 @@ END
 }
 
 write_prm_3d() { # formulation horizon
-  cat <<END
-set Dimension = 3
-subsection Geometry
-  set Mesh          = hyper rectangle
-  set Lower corner  = 0, 0, 0
-  set Upper corner  = 1, 1, 5
-  set Subdivisions  = 6, 6, 30
-end
-subsection Discretization
-  set Formulation    = $1
-  set Horizon factor = $2
-end
-subsection Material
-  set Model         = isochoric-volumetric neo-Hooke
-  set Bulk modulus  = 500
-  set Shear modulus = 161.148
-end
-subsection Boundary conditions
-  set Dirichlet = 4: xyz, 5: xyz
-  subsection Prescribed displacement
-    set Function constants  = a=0.523598775598299
-    set Function expression = 0.5 + (x - 0.5)*cos(a*t*z/5) - (y - 0.5)*sin(a*t*z/5) - x; 0.5 + (x - 0.5)*sin(a*t*z/5) + (y - 0.5)*cos(a*t*z/5) - y; 0
-  end
-end
-subsection Loading
-  set Load steps        = 1
-  set Maximum step cuts = 0
-  set Predictor         = linearized
-end
-subsection Newton
-  set Maximum iterations = 30
-end
-subsection Linear solver
-  set Type = direct
-end
-subsection Output
-  set Directory = $WORK/out
-  set VTU       = false
-  set Points    = probe: 1, 1, 2.5
-end
-END
+  torsion_prm 6 "$1" "$2" 30 1 linearized "$WORK/out"
+  printf 'subsection Output\n  set Points = probe: 1, 1, 2.5\nend\n'
 }
 
 run() { # case formulation counterpart [horizon [nu]]

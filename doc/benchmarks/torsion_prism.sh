@@ -20,6 +20,7 @@
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/torsion_prism.sh build-release/applications/pg_solve/pg_solve [N] [linearized|boundary values]
 set -e
+. "$(dirname "$0")/torsion_case.sh"
 PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
 N=${2:-8}
 PREDICTOR=${3:-linearized}
@@ -35,47 +36,7 @@ RESULTS="$OUT/results_N${N}_$(echo "$PREDICTOR" | tr ' ' '_').txt"
 # the rotation by that angle converges in that many equal load steps
 # (default 1)
 converges() {
-  radians=$(awk "BEGIN { printf \"%.15g\", $2 * atan2(0, -1) / 180 }")
-  cat > "$WORK/run.prm" <<END
-set Dimension = 3
-subsection Geometry
-  set Mesh          = hyper rectangle
-  set Lower corner  = 0, 0, 0
-  set Upper corner  = 1, 1, 5
-  set Subdivisions  = $N, $N, $((5 * N))
-end
-subsection Discretization
-  set Formulation    = $1
-  set Horizon factor = $HORIZON
-end
-subsection Material
-  set Model         = isochoric-volumetric neo-Hooke
-  set Bulk modulus  = 500
-  set Shear modulus = 161.148
-end
-subsection Boundary conditions
-  set Dirichlet = 4: xyz, 5: xyz
-  subsection Prescribed displacement
-    set Function constants  = a=$radians
-    set Function expression = 0.5 + (x - 0.5)*cos(a*t*z/5) - (y - 0.5)*sin(a*t*z/5) - x; 0.5 + (x - 0.5)*sin(a*t*z/5) + (y - 0.5)*cos(a*t*z/5) - y; 0
-  end
-end
-subsection Loading
-  set Load steps        = ${3:-1}
-  set Maximum step cuts = 0
-  set Predictor         = $PREDICTOR
-end
-subsection Newton
-  set Maximum iterations = 30
-end
-subsection Linear solver
-  set Type = direct
-end
-subsection Output
-  set Directory = $WORK/out
-  set VTU       = false
-end
-END
+  torsion_prm "$N" "$1" "$HORIZON" "$2" "${3:-1}" "$PREDICTOR" "$WORK/out" > "$WORK/run.prm"
   "$PG_SOLVE" "$WORK/run.prm" > "$WORK/run.log" 2>&1
 }
 
@@ -126,6 +87,7 @@ fi
 echo "$FORMULATIONS" | tr '|' '\n' | while read -r f; do
   lo=${LO:-0}
   hi=${HI:-128}
+  rm -f "$WORK/best.json"
   while [ $((hi - lo)) -gt 1 ]; do
     mid=$(((lo + hi) / 2))
     if converges "$f" $mid; then
@@ -135,6 +97,12 @@ echo "$FORMULATIONS" | tr '|' '\n' | while read -r f; do
       hi=$mid
     fi
   done
+  if [ $lo -gt 0 ] && [ ! -f "$WORK/best.json" ]; then
+    # LO was given and every angle above it failed: LO's run is not here
+    echo "$f | $N x $N x $((5 * N)) | $HORIZON | - | $lo (LO, not run here) | $hi | - | -" >> "$RESULTS"
+    tail -n 1 "$RESULTS"
+    continue
+  fi
   if [ $lo -eq 0 ]; then
     echo "$f | $N x $N x $((5 * N)) | $HORIZON | - | 0 | 1 | - | - ($(tail -n 2 "$WORK/run.log" | tr '\n' ' '))" >> "$RESULTS"
     tail -n 1 "$RESULTS"

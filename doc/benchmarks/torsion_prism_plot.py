@@ -20,6 +20,8 @@ SOURCE = {
     "VCBCPBG V5sn UnlP0": 54,
     "VCPBG V5sn U2": 4,
     "VCPBG V5sn U2P1": 58,
+    "VCPBG V5sn U2P1C": 47,
+    "VCPBG Unl+P1C": 49,
     "VCPBG V5sn U1SIG": 4,
 }
 LABEL = {
@@ -31,6 +33,8 @@ LABEL = {
     "VCBCPBG V5sn UnlP0": "PBG UnlP0",
     "VCPBG V5sn U2": "PBG U2",
     "VCPBG V5sn U2P1": "PBG U2P1",
+    "VCPBG V5sn U2P1C": "PBG U2P1C",
+    "VCPBG Unl+P1C": "PBG Unl+P1C",
     "VCPBG V5sn U1SIG": "PBG U1SIG",
 }
 
@@ -53,7 +57,7 @@ linearized = largest_angles(DIRECTORY + "results_N8_linearized.txt")
 
 methods = list(SOURCE)
 y = range(len(methods))
-fig, ax = plt.subplots(figsize=(7, 4.5))
+fig, ax = plt.subplots(figsize=(7, 5.5))
 height = 0.27
 for offset, (name, data, colour) in enumerate(
     [
