@@ -55,11 +55,11 @@ namespace pg
                 continue;
               }
             operations.revert();
+            const std::string last_failure = operations.last_failure();
             // A residual that stalls on its round-off floor before and
             // after a cut stalls after every further cut: the floor is
             // absolute, and a smaller step only lowers |R_0|.
-            const bool stalled =
-              NewtonSolver::stalled(operations.last_failure());
+            const bool stalled = NewtonSolver::stalled(last_failure);
             if (stalled && stalled_before)
               {
                 operations.give_up(step, t);
@@ -72,7 +72,7 @@ namespace pg
                     " (last load factor reached: " + std::to_string(t) +
                     "): Newton's residual stalled before and after a cut, "
                     "and smaller steps do not lower its round-off floor. " +
-                    operations.last_failure() +
+                    last_failure +
                     " The results of the converged steps are in '" +
                     output_directory + "'."));
               }
@@ -80,7 +80,6 @@ namespace pg
             if (++cuts > parameters.maximum_step_cuts)
               {
                 operations.give_up(step, t);
-                const std::string last_failure = operations.last_failure();
                 AssertThrow(
                   false,
                   ExcMessage(
