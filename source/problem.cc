@@ -218,7 +218,10 @@ namespace pg
       prm.cpd,
       [this](const typename DoFHandler<dim>::active_cell_iterator &cell) {
         return system.loaded_by_face_traction(cell);
-      });
+      },
+      prm.boundary_conditions.mirror_symmetry ?
+        prm.boundary_conditions.symmetry :
+        std::vector<types::boundary_id>());
     Timer timer;
     summary.dimension   = dim;
     summary.formulation = formulation.text;

@@ -129,8 +129,10 @@ namespace pg
           for (unsigned int k = 0; k < u0.size(); ++k)
             {
               disorder_positions[k] = particles.position(k);
+              // (the real neighbours: a mirror image moves with its
+              // original)
               for (const unsigned int j : families.members(k))
-                if (j != k)
+                if (j != k && j < particles.n_particles())
                   disorder_neighbours[k].push_back(j);
             }
         }

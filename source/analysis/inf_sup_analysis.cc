@@ -77,18 +77,23 @@ namespace pg
       undeformed_family(const Postprocess::ProblemView<dim>  &view,
                         const unsigned int                    f,
                         std::vector<Tensor<1, dim>>          &y,
-                        std::vector<types::global_dof_index> &dofs)
+                        std::vector<types::global_dof_index> &dofs,
+                        std::vector<double>                  &signs)
       {
         const ParticleSet<dim> &particles = *view.particles;
         const unsigned int      k         = (*view.owned_families)[f];
         const auto              members   = view.families->members(k);
         dofs.resize(members.size() * dim);
+        signs.resize(members.size() * dim);
         y.resize(members.size());
         for (unsigned int b = 0; b < members.size(); ++b)
           {
             y[b] = particles.position(members[b]) - particles.position(k);
             for (unsigned int c = 0; c < dim; ++c)
-              dofs[b * dim + c] = particles.dof(members[b], c);
+              {
+                dofs[b * dim + c]  = particles.dof(members[b], c);
+                signs[b * dim + c] = particles.mirror_sign(members[b], c);
+              }
           }
       }
     } // namespace
@@ -122,12 +127,22 @@ namespace pg
       const auto add = [&](const QuadratureTable<dim>                 &table,
                            const std::vector<Tensor<1, dim>>          &y,
                            const std::vector<types::global_dof_index> &dofs,
-                           const unsigned int                          degree) {
+                           const unsigned int                          degree,
+                           const std::vector<double> &signs = {}) {
         if (mixed)
           InfSup::pressure_projection(table, y, degree, t_local);
         else
           assemble_element(table, y, t_material, residual, &t_local);
         assemble_element(table, y, s_material, residual, &s_local);
+        // mirror images: reflected components
+        for (unsigned int i = 0; i < signs.size(); ++i)
+          if (signs[i] != 1.)
+            for (auto *local : {&t_local, &s_local})
+              for (unsigned int j = 0; j < signs.size(); ++j)
+                {
+                  (*local)(i, j) *= signs[i];
+                  (*local)(j, i) *= signs[i];
+                }
         zero_constraints.distribute_local_to_global(t_local, dofs, T);
         zero_constraints.distribute_local_to_global(s_local, dofs, S);
       };
@@ -140,10 +155,11 @@ namespace pg
         });
       std::vector<Tensor<1, dim>>          y;
       std::vector<types::global_dof_index> dofs;
+      std::vector<double>                  signs;
       for (unsigned int f = 0; f < view.owned_families->size(); ++f)
         {
-          undeformed_family(view, f, y, dofs);
-          add((*view.family_tables)[f], y, dofs, family_degree);
+          undeformed_family(view, f, y, dofs, signs);
+          add((*view.family_tables)[f], y, dofs, family_degree, signs);
         }
       T.compress(VectorOperation::add);
       S.compress(VectorOperation::add);
@@ -215,6 +231,7 @@ namespace pg
         });
       std::vector<Tensor<1, dim>>          y;
       std::vector<types::global_dof_index> dofs;
+      std::vector<double>                  signs;
 
       // The families: S on the table (with the bubble node), B and M
       for (unsigned int f = 0; f < n_families; ++f)
@@ -226,7 +243,7 @@ namespace pg
           const QuadratureTable<dim>  kernel_table =
             bubble ? with_bubble_node(family) : family;
           const unsigned int n_nodes = kernel_table.n_nodes;
-          undeformed_family(view, f, y, dofs);
+          undeformed_family(view, f, y, dofs, signs);
           index.resize(n_nodes * dim);
           for (unsigned int i = 0; i < dofs.size(); ++i)
             index[i] = dense[dofs[i]];
@@ -237,6 +254,14 @@ namespace pg
                 index[m * dim + c] = n_u + f * dim + c;
             }
           assemble_element(kernel_table, y, s_material, residual, &local);
+          // mirror images: reflected displacement components (the
+          // pressure is even)
+          for (unsigned int i = 0; i < signs.size(); ++i)
+            for (unsigned int j = 0; j < local.n(); ++j)
+              {
+                local(i, j) *= signs[i];
+                local(j, i) *= signs[i];
+              }
           scatter(S);
 
           const std::vector<double> pi = nodal_field_interpolation(family);
@@ -247,12 +272,16 @@ namespace pg
               for (unsigned int a = 0; a < m; ++a)
                 {
                   const double wp = w * pi[q * m + a];
+                  const unsigned int row = particles.original(members[a]);
                   for (unsigned int b = 0; b < n_nodes; ++b)
                     for (unsigned int c = 0; c < dim; ++c)
                       if (index[b * dim + c] >= 0)
-                        B(members[a], index[b * dim + c]) += wp * V[b][c];
+                        B(row, index[b * dim + c]) +=
+                          wp * V[b][c] *
+                          (b < m ? signs[b * dim + c] : 1.);
                   for (unsigned int b = 0; b < m; ++b)
-                    M(members[a], members[b]) += wp * pi[q * m + b];
+                    M(row, particles.original(members[b])) +=
+                      wp * pi[q * m + b];
                 }
             }
         }

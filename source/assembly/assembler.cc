@@ -49,8 +49,30 @@ namespace pg
         : scratch(other.scratch->clone())
       {}
       std::unique_ptr<GroupScratch> scratch;
+      /** ElementGroup::get_dof_signs() of the element. */
+      std::vector<double> signs;
     };
   } // namespace
+
+
+
+  void
+  apply_dof_signs(const std::vector<double> &signs, LocalSystem &local)
+  {
+    const unsigned int n = local.dofs.size();
+    AssertDimension(signs.size(), n);
+    for (unsigned int i = 0; i < n; ++i)
+      if (signs[i] != 1.)
+        {
+          local.residual[i] *= signs[i];
+          if (local.with_matrix)
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                local.matrix(i, j) *= signs[i];
+                local.matrix(j, i) *= signs[i];
+              }
+        }
+  }
 
 
 
@@ -370,6 +392,10 @@ namespace pg
                                element_history,
                                *scratch.scratch,
                                local);
+                // mirror images: the element's DoF is +-1 times the global
+                group.get_dof_signs(*it, scratch.signs);
+                if (!scratch.signs.empty())
+                  apply_dof_signs(scratch.signs, local);
                 if (!all_finite(local.residual,
                                 with_matrix ? &local.matrix : nullptr))
                   {

@@ -63,7 +63,7 @@ namespace pg
     unit_stress_residual = pg::unit_stress_residual(families,
                                                     owned_families,
                                                     tables,
-                                                    particles.n_particles(),
+                                                    particles,
                                                     comm);
     area_weights = pg::boundary_area_weights(particles, unit_stress_residual);
   }
@@ -110,6 +110,13 @@ namespace pg
           return loads.is_neumann(area.first);
         }))
       {
+        AssertThrow(particles.n_mirror_planes() == 0,
+                    ExcBadParameter(
+                      "Boundary conditions/Particle traction area",
+                      "exact stress",
+                      "this verification option is not built for mirrored "
+                      "families; set 'Symmetry treatment = constraint' in "
+                      "the same subsection."));
         // the surface load plus the body force: the whole internal force
         // of the exact stress
         const Tensor<1, dim> force = exact_stress_force(k);

@@ -30,7 +30,8 @@ namespace pg
     const FormulationCode                           &formulation,
     const Parameters::Discretization                &discretization_parameters,
     const Parameters::Cpd                           &cpd_parameters,
-    const std::function<bool(const CellIterator &)> &loaded_by_face_traction)
+    const std::function<bool(const CellIterator &)> &loaded_by_face_traction,
+    const std::vector<types::boundary_id>           &mirror_symmetry_ids)
   {
     Timer timer;
     Mesh::create_mesh(geometry, triangulation, &mesh_notes);
@@ -82,7 +83,7 @@ namespace pg
 
     // Particles, families, and the quadrature table of every family owned
     // by this rank (owned = its master's DoFs are owned here).
-    particles.reinit(dof_handler, meshfree);
+    particles.reinit(dof_handler, meshfree, mirror_symmetry_ids);
     time_setup += timer.wall_time();
     timer.restart();
     if (particles.n_particles() > 0)
@@ -90,9 +91,40 @@ namespace pg
         const bool is_cpd =
           (formulation.method == FormulationCode::Method::cpd);
         // CPD with partial volumes: bonds reach delta + h/2
+        const double horizon_factor =
+          discretization_parameters.horizon_factor +
+          (is_cpd && cpd_parameters.partial_volumes ? 0.5 : 0.);
+        if (particles.n_mirror_planes() > 0)
+          {
+            // CPD counts each interaction of the lattice once, and VC2
+            // solves its own system: neither is built for mirror images
+            AssertThrow(!is_cpd && !formulation.second_order_consistency,
+                        ExcBadParameter(
+                          "Boundary conditions/Symmetry treatment",
+                          "mirror",
+                          "mirrored families are not built for <" +
+                            formulation.text +
+                            "> (subsection 'Discretization'): set "
+                            "'Symmetry treatment = constraint', or model the "
+                            "full body."));
+            AssertThrow(discretization_parameters.nearest_neighbours == 0,
+                        ExcBadParameter(
+                          "Boundary conditions/Symmetry treatment",
+                          "mirror",
+                          "'Nearest neighbours' (subsection "
+                          "'Discretization') gives no horizon within which "
+                          "to mirror the particles. Use 'Horizon factor' "
+                          "or 'Horizon', or set 'Symmetry treatment = "
+                          "constraint'."));
+            double reach = 0;
+            for (unsigned int k = 0; k < particles.n_particles(); ++k)
+              reach = std::max(reach,
+                               horizon_factor * particles.spacing(k) +
+                                 discretization_parameters.horizon);
+            particles.add_mirror_images(reach);
+          }
         families.reinit(particles,
-                        discretization_parameters.horizon_factor +
-                          (is_cpd && cpd_parameters.partial_volumes ? 0.5 : 0.),
+                        horizon_factor,
                         discretization_parameters.nearest_neighbours,
                         discretization_parameters.horizon);
         if (is_cpd)
@@ -214,16 +246,17 @@ namespace pg
     // (a table of family e reads g^{jje} of its member j, and the 'exact
     // stress' force of particle k builds the tables of k's members).
     std::vector<bool> needed(families.n_families(), false);
+    // (a mirror image's family is its original's)
     for (const unsigned int k : owned_families)
       for (const unsigned int j : families.members(k))
-        needed[j] = true;
+        needed[particles.original(j)] = true;
     if (formulation.method == FormulationCode::Method::ppg1)
       {
         const std::vector<bool> ring = needed;
         for (unsigned int k = 0; k < ring.size(); ++k)
           if (ring[k])
             for (const unsigned int j : families.members(k))
-              needed[j] = true;
+              needed[particles.original(j)] = true;
       }
     return needed;
   }

@@ -5,6 +5,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_index_access.h>
@@ -237,7 +238,84 @@ namespace pg
       if (particles->on_interface(k) &&
           particles->boundary_area_vectors(k).empty())
         surface.push_back(k);
+    restrict_to_mirror_planes();
     fix_null_space(surface);
+  }
+
+
+
+  template <int dim>
+  void
+  CorrectionSystem<dim>::restrict_to_mirror_planes()
+  {
+    // A particle on mirror planes is its own image: its factors are even,
+    // alpha^k . n = 0 for each plane normal n, and the n-component of
+    // d^k holds by symmetry (its row is replaced). Of the directions E in
+    // which the option lets alpha^k vary (and holds the equations: all,
+    // the face's tangent plane, the edge), E' = E orthogonal to the
+    // normals stays: dim directions interior, dim - 1 a face, 1 an edge,
+    // none fixed. Option p keeps the Gauss identities only in part then,
+    // and d + 1 fixed particles would over-determine the system.
+    if (particles->n_mirror_planes() == 0)
+      return;
+    AssertThrow(formulation.vc_boundary != FormulationCode::VCBoundary::p ||
+                  !prescribed_targets.empty(),
+                ExcBadParameter("Boundary conditions/Symmetry treatment",
+                                "mirror",
+                                "the VC boundary option p of '" +
+                                  formulation.text +
+                                  "' (subsection 'Discretization') is not "
+                                  "built for mirrored families. Use option "
+                                  "sn or s, or 'Symmetry treatment = "
+                                  "constraint'."));
+    for (unsigned int k = 0; k < particles->n_particles(); ++k)
+      {
+        const unsigned int planes = particles->on_mirror_planes(k);
+        if (planes == 0 || kind[k] == Row::fixed)
+          continue;
+        // projector onto E (the rows of R[k] span it; orthonormalised)
+        std::vector<Tensor<1, dim>> basis;
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            Tensor<1, dim> v = R[k][i];
+            for (const auto &b : basis)
+              v -= (v * b) * b;
+            if (v.norm() > 1e-10)
+              basis.push_back(v / v.norm());
+          }
+        SymmetricTensor<2, dim> P_E, P_planes = unit_symmetric_tensor<dim>();
+        for (const auto &b : basis)
+          P_E += symmetrize(outer_product(b, b));
+        for (unsigned int p = 0; p < particles->n_mirror_planes(); ++p)
+          if (planes & (1u << p))
+            P_planes[particles->mirror_plane_axis(p)]
+                    [particles->mirror_plane_axis(p)] = 0.;
+        // E' = the eigenvectors of P_planes P_E P_planes with eigenvalue 1
+        const auto eigen = eigenvectors(symmetrize(
+          Tensor<2, dim>(P_planes) * Tensor<2, dim>(P_E) *
+          Tensor<2, dim>(P_planes)));
+        std::vector<Tensor<1, dim>> kept;
+        for (const auto &[value, vector] : eigen)
+          if (value > 1. - 1e-8)
+            kept.push_back(vector);
+        R[k]          = Tensor<2, dim>();
+        constraint[k] = Tensor<2, dim>();
+        if (kept.empty())
+          kind[k] = Row::fixed;
+        else if (kept.size() == dim)
+          R[k] = unit_symmetric_tensor<dim>();
+        else
+          {
+            kind[k] = Row::tangential;
+            if (kept.size() == 1)
+              split_rows(kept[0], R[k], constraint[k]);
+            else // dim - 1 = 2 directions in 3-D: the normal of their plane
+              {
+                Tensor<1, dim> normal_of_kept = eigen[dim - 1].second;
+                split_rows(normal_of_kept, constraint[k], R[k]);
+              }
+          }
+      }
   }
 
 
@@ -392,11 +470,20 @@ namespace pg
     for (const unsigned int k : owned_families)
       elements->for_each_correction_block(
         k,
-        [&](const unsigned int    a,
-            const unsigned int    f,
-            const Tensor<2, dim> &C) {
+        [&](const unsigned int    image_a,
+            const unsigned int    image_f,
+            const Tensor<2, dim> &C_image) {
+          // a mirror image's row is its original's row reflected, its
+          // factors the original's reflected (diagonal reflections)
+          const unsigned int a = particles->original(image_a);
+          const unsigned int f = particles->original(image_f);
           if (kind[a] == Row::fixed)
             return;
+          Tensor<2, dim> C = C_image;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int c = 0; c < dim; ++c)
+              C[i][c] *= particles->mirror_sign(image_a, i) *
+                         particles->mirror_sign(image_f, c);
           const Tensor<2, dim> RC = R[a] * C;
           for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int c = 0; c < dim; ++c)

@@ -18,6 +18,16 @@ namespace pg
 
   template <int dim>
   void
+  ElementGroup<dim>::get_dof_signs(const unsigned int,
+                                   std::vector<double> &signs) const
+  {
+    signs.clear();
+  }
+
+
+
+  template <int dim>
+  void
   ElementGroup<dim>::add_group_sparsity(
     const AffineConstraints<double> &constraints,
     DynamicSparsityPattern          &sparsity) const
@@ -43,16 +53,17 @@ namespace pg
   {
     const LinearAlgebra::GlobalReader    du_at(du);
     std::vector<types::global_dof_index> dofs;
-    std::vector<double>                  du_local;
+    std::vector<double>                  du_local, signs;
     for (unsigned int e = 0; e < condensed_iterates.size(); ++e)
       {
         // (U2P1C keeps iterates without fields to recover)
         if (!condensed_iterates[e].linearised())
           continue;
         get_dof_indices(e, dofs);
+        get_dof_signs(e, signs);
         du_local.resize(dofs.size());
         for (unsigned int i = 0; i < dofs.size(); ++i)
-          du_local[i] = du_at[dofs[i]];
+          du_local[i] = (signs.empty() ? 1. : signs[i]) * du_at[dofs[i]];
         update_condensed_fields(condensed_iterates[e], du_local);
       }
   }

@@ -37,7 +37,7 @@ namespace pg
       {
         g.bonds[i] =
           particles.position(members[i]) - particles.position(members[0]);
-        g.volumes[i] = particles.volume(members[i]);
+        g.volumes[i] = particles.member_volume(members[i]);
       }
     g.weight_exponent = weight_exponent;
     return g;
@@ -356,15 +356,19 @@ namespace pg
         double family_volume = 0;
         for (const double v : geom.volumes)
           family_volume += v;
+        // the family's share of the model: V^k / its member volume (1/2^m
+        // for a master on m mirror planes, whose family is its own image)
+        const double share = family_share(k);
         if (formulation.points == FormulationCode::Points::u1)
-          table.add_point(geom.volumes[0],
+          table.add_point(share * geom.volumes[0],
                           master[k],
                           particles.position(members[0]));
         else
           for (unsigned int j = 0; j < n; ++j)
             {
               trial_at(j);
-              table.add_point(geom.volumes[0] * geom.volumes[j] / family_volume,
+              table.add_point(share * geom.volumes[0] * geom.volumes[j] /
+                                family_volume,
                               g,
                               particles.position(members[j]));
             }
@@ -376,11 +380,14 @@ namespace pg
            ExcInternalError());
     table.reinit(n, false);
     table.trial.reserve((n - 1) * n);
+    const double share = family_share(k);
     for (unsigned int j = 1; j < n; ++j)
       {
         trial_at(j);
-        table.add_point(geom.volumes[j], g, particles.position(members[j]));
-        const Tensor<1, dim> &t = ppg_test_vector(k, j);
+        table.add_point(share * geom.volumes[j],
+                        g,
+                        particles.position(members[j]));
+        const Tensor<1, dim> t = ppg_test_vector(k, j);
         table.add_test_vector(formulation.method == Method::ppg1 ? 0 : j, t);
         table.add_test_vector(formulation.method == Method::ppg1 ? j : 0, -t);
       }
@@ -389,20 +396,50 @@ namespace pg
 
 
   template <int dim>
-  const Tensor<1, dim> &
+  Tensor<1, dim>
   FamilyElements<dim>::ppg_test_vector(const unsigned int k,
                                        const unsigned int j) const
   {
     if (formulation.method == FormulationCode::Method::ppg2)
       return master_test[k][j];
-    // PPG1: g^{jjk}, family j's master gradient for node k
-    const unsigned int member   = families.members(k)[j];
+    // PPG1: g^{jjk}, family j's master gradient for node k; for a mirror
+    // image j of particle o across the planes M, the reflection of
+    // family o's gradient for the image of k across M
+    const auto [member, index] = member_family_index(k, j);
+    Tensor<1, dim> g           = master_test[member][index];
+    const unsigned int image   = families.members(k)[j];
+    for (unsigned int c = 0; c < dim; ++c)
+      g[c] *= particles.mirror_sign(image, c);
+    return g;
+  }
+
+
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  FamilyElements<dim>::member_family_index(const unsigned int k,
+                                           const unsigned int j) const
+  {
+    const unsigned int image    = families.members(k)[j];
+    const unsigned int member   = particles.original(image);
+    const unsigned int master   = particles.mirror_image(k,
+                                                       particles.mirror_mask(
+                                                         image));
     const auto         family_j = families.members(member);
     const auto         found =
-      std::lower_bound(family_j.begin() + 1, family_j.end(), k);
-    Assert(found != family_j.end() && *found == k,
+      std::lower_bound(family_j.begin() + 1, family_j.end(), master);
+    Assert(found != family_j.end() && *found == master,
            ExcMessage("The families are not pairwise."));
-    return master_test[member][found - family_j.begin()];
+    return {member, static_cast<unsigned int>(found - family_j.begin())};
+  }
+
+
+
+  template <int dim>
+  double
+  FamilyElements<dim>::family_share(const unsigned int k) const
+  {
+    return particles.volume(k) / particles.member_volume(k);
   }
 
 
@@ -420,7 +457,7 @@ namespace pg
         AssertDimension(table.test_vectors.size(), 2 * (n - 1));
         for (unsigned int j = 1; j < n; ++j)
           {
-            const Tensor<1, dim> &t             = ppg_test_vector(k, j);
+            const Tensor<1, dim> t              = ppg_test_vector(k, j);
             table.test_vectors[2 * (j - 1)]     = t;
             table.test_vectors[2 * (j - 1) + 1] = -t;
           }

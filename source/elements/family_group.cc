@@ -84,8 +84,30 @@ namespace pg
         {
           dofs[b * dim + c] = particles.dof(members[b], c);
           y[b][c]           = particles.position(members[b])[c] -
-                    particles.position(k)[c] + u_at[dofs[b * dim + c]];
+                    particles.position(k)[c] +
+                    particles.mirror_sign(members[b], c) *
+                      u_at[dofs[b * dim + c]];
         }
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyGroupBase<dim>::get_dof_signs(const unsigned int   e,
+                                      std::vector<double> &signs) const
+  {
+    signs.clear();
+    const auto members = families.members(owned_families[e]);
+    // members are sorted: the images, numbered last, come last
+    if (members[members.size() - 1] < particles.n_particles())
+      return;
+    std::vector<types::global_dof_index> dofs;
+    this->get_dof_indices(e, dofs); // the extra fields of derived groups
+    signs.assign(dofs.size(), 1.);
+    for (unsigned int b = 0; b < members.size(); ++b)
+      for (unsigned int c = 0; c < dim; ++c)
+        signs[b * dim + c] = particles.mirror_sign(members[b], c);
   }
 
 
@@ -199,7 +221,9 @@ namespace pg
       for (const unsigned int i :
            this->families.members(this->owned_families[e]))
         {
-          containing[i].push_back(this->owned_families[e]);
+          // a mirror image couples like its original
+          containing[this->particles.original(i)].push_back(
+            this->owned_families[e]);
           for (unsigned int c = 0; c < dim; ++c)
             if (const auto *entries =
                   constraints.get_constraint_entries(this->particles.dof(i, c));
@@ -220,8 +244,9 @@ namespace pg
           continue;
         coupled.clear();
         for (const unsigned int k : containing[i])
-          for (const unsigned int j : this->families.members(k))
-            if (last_row[j] != i)
+          for (const unsigned int image : this->families.members(k))
+            if (const unsigned int j = this->particles.original(image);
+                last_row[j] != i)
               {
                 last_row[j] = i;
                 coupled.push_back(j);
@@ -324,7 +349,7 @@ namespace pg
           {
             scratch.xi[b] = this->particles.position(members[b]) -
                             this->particles.position(k);
-            scratch.volumes[b] = this->particles.volume(members[b]);
+            scratch.volumes[b] = this->particles.member_volume(members[b]);
           }
         add_hourglass_force(family_tables[e],
                             scratch.xi,

@@ -13,10 +13,11 @@ namespace pg
   unit_stress_residual(const FamilySet<dim>                    &families,
                        const std::vector<unsigned int>         &owned_families,
                        const std::vector<QuadratureTable<dim>> &tables,
-                       const unsigned int                       n_particles,
+                       const ParticleSet<dim>                  &particles,
                        const MPI_Comm                           comm)
   {
     AssertDimension(tables.size(), owned_families.size());
+    const unsigned int          n_particles = particles.n_particles();
     std::vector<double>         d(n_particles * dim, 0.);
     std::vector<Tensor<1, dim>> local;
     for (unsigned int f = 0; f < owned_families.size(); ++f)
@@ -24,9 +25,11 @@ namespace pg
         const auto members = families.members(owned_families[f]);
         local.assign(members.size(), Tensor<1, dim>());
         add_unit_stress_residual(tables[f], local);
+        // a mirror image's row is its original's, reflected
         for (unsigned int a = 0; a < members.size(); ++a)
           for (unsigned int c = 0; c < dim; ++c)
-            d[members[a] * dim + c] += local[a][c];
+            d[particles.original(members[a]) * dim + c] +=
+              particles.mirror_sign(members[a], c) * local[a][c];
       }
     Utilities::MPI::sum(d, comm, d);
     std::vector<Tensor<1, dim>> unit_stress(n_particles);
@@ -138,13 +141,13 @@ namespace pg
   unit_stress_residual<2>(const FamilySet<2> &,
                           const std::vector<unsigned int> &,
                           const std::vector<QuadratureTable<2>> &,
-                          const unsigned int,
+                          const ParticleSet<2> &,
                           const MPI_Comm);
   template std::vector<Tensor<1, 3>>
   unit_stress_residual<3>(const FamilySet<3> &,
                           const std::vector<unsigned int> &,
                           const std::vector<QuadratureTable<3>> &,
-                          const unsigned int,
+                          const ParticleSet<3> &,
                           const MPI_Comm);
   template double
   max_interior_unit_stress_residual<2>(const ParticleSet<2> &,

@@ -18,8 +18,10 @@ namespace pg
     namespace bgi        = boost::geometry::index;
     const unsigned int n = particles.n_particles();
 
-    std::vector<Point<dim>> points(n);
-    for (unsigned int k = 0; k < n; ++k)
+    // the real particles and their mirror images (ParticleSet); only the
+    // real ones have families
+    std::vector<Point<dim>> points(particles.n_particles_and_images());
+    for (unsigned int k = 0; k < points.size(); ++k)
       points[k] = particles.position(k);
     const auto tree = pack_rtree_of_indices(points);
 
@@ -56,10 +58,23 @@ namespace pg
             neighbours[k].push_back(j);
       }
 
-    // Pairwise completion: j in H^k => k in H^j.
+    // Pairwise completion: j in H^k => k in H^j. For an image j of
+    // particle o across the planes M: the image of k across M joins H^o
+    // (the mirror of j in H^k), so that the mirrored families are those
+    // of the full body.
+    // (an image of k itself completes H^k with itself: the lists grow
+    // only after the loop)
+    std::vector<std::pair<unsigned int, unsigned int>> completion;
     for (unsigned int k = 0; k < n; ++k)
-      for (std::size_t i = 0; i < neighbours[k].size(); ++i)
-        neighbours[neighbours[k][i]].push_back(k);
+      for (const unsigned int j : neighbours[k])
+        if (j < n)
+          completion.emplace_back(j, k);
+        else
+          completion.emplace_back(particles.original(j),
+                                  particles.mirror_image(
+                                    k, particles.mirror_mask(j)));
+    for (const auto &[master, member] : completion)
+      neighbours[master].push_back(member);
     offsets.assign(1, 0);
     indices.clear();
     for (unsigned int k = 0; k < n; ++k)

@@ -1,3 +1,4 @@
+#include <pg/base/exceptions.h>
 #include <pg/mesh/particle_set.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -11,13 +12,103 @@
 
 namespace pg
 {
+  namespace
+  {
+    /** "Boundary conditions/Symmetry treatment = mirror" cannot be used. */
+    ExcBadParameter
+    mirror_error(const std::string &why)
+    {
+      return ExcBadParameter("Boundary conditions/Symmetry treatment",
+                             "mirror",
+                             why +
+                               " Set 'Symmetry treatment = constraint' "
+                               "(n . u = 0 alone) for such planes.");
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   ParticleSet<dim>::reinit(const DoFHandler<dim>   &dof_handler,
                            const std::vector<bool> &meshfree)
   {
+    reinit(dof_handler, meshfree, {});
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleSet<dim>::reinit(const DoFHandler<dim>                 &dof_handler,
+                           const std::vector<bool>               &meshfree,
+                           const std::vector<types::boundary_id> &mirror_ids)
+  {
     const Triangulation<dim> &tria       = dof_handler.get_triangulation();
     const unsigned int        n_vertices = tria.n_vertices();
+
+    // The mirror planes, and the planes each vertex lies on.
+    AssertThrow(mirror_ids.size() <= dim,
+                mirror_error("More than dim symmetry planes."));
+    mirror_planes.clear();
+    std::vector<unsigned int> vertex_planes(n_vertices, 0);
+    const auto is_mirror_face = [&](const auto &face) {
+      return face->at_boundary() &&
+             std::find(mirror_ids.begin(), mirror_ids.end(),
+                       face->boundary_id()) != mirror_ids.end();
+    };
+    for (const types::boundary_id id : mirror_ids)
+      {
+        MirrorPlane plane{numbers::invalid_unsigned_int, 0., id};
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && face->boundary_id() == id)
+              {
+                // the axis along which the face's vertices do not spread
+                unsigned int axis = numbers::invalid_unsigned_int;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    double lo = face->vertex(0)[d], hi = lo;
+                    for (const unsigned int v : face->vertex_indices())
+                      {
+                        lo = std::min(lo, face->vertex(v)[d]);
+                        hi = std::max(hi, face->vertex(v)[d]);
+                      }
+                    if (hi - lo <= 1e-10 * face->diameter())
+                      axis = d;
+                  }
+                AssertThrow(axis != numbers::invalid_unsigned_int,
+                            mirror_error("The symmetry boundary " +
+                                         std::to_string(id) +
+                                         " is not normal to a coordinate "
+                                         "axis, which mirrored families "
+                                         "need."));
+                if (plane.axis == numbers::invalid_unsigned_int)
+                  plane = {axis, face->vertex(0)[axis], id};
+                AssertThrow(plane.axis == axis &&
+                              std::abs(face->vertex(0)[axis] -
+                                       plane.offset) <=
+                                1e-10 * face->diameter(),
+                            mirror_error("The faces of the symmetry "
+                                         "boundary " +
+                                         std::to_string(id) +
+                                         " do not lie in one plane."));
+                for (const unsigned int v : face->vertex_indices())
+                  vertex_planes[face->vertex_index(v)] |=
+                    (1u << mirror_planes.size());
+              }
+        AssertThrow(plane.axis != numbers::invalid_unsigned_int,
+                    mirror_error("No boundary face has the symmetry id " +
+                                 std::to_string(id) + "."));
+        for (const MirrorPlane &other : mirror_planes)
+          AssertThrow(other.axis != plane.axis,
+                      mirror_error("The symmetry boundaries " +
+                                   std::to_string(other.boundary_id) +
+                                   " and " + std::to_string(id) +
+                                   " are parallel, which would need "
+                                   "infinitely many images."));
+        mirror_planes.push_back(plane);
+      }
 
     // Which vertices belong to meshfree cells, and which also to FE cells.
     std::vector<bool> is_particle(n_vertices, false);
@@ -47,10 +138,18 @@ namespace pg
     area_vectors.assign(n, {});
     interface.resize(n);
     interface_areas.assign(n, Tensor<1, dim>());
+    n_real = n;
+    plane_masks.resize(n);
+    image_originals.clear();
+    image_masks.clear();
+    image_indices.assign(n, {});
     for (unsigned int k = 0; k < n; ++k)
       {
-        positions[k] = tria.get_vertices()[vertices[k]];
-        interface[k] = on_fe_cell[vertices[k]];
+        positions[k]   = tria.get_vertices()[vertices[k]];
+        interface[k]   = on_fe_cell[vertices[k]];
+        plane_masks[k] = vertex_planes[vertices[k]];
+        image_indices[k].fill(numbers::invalid_unsigned_int);
+        image_indices[k][0] = k;
       }
 
     // Lumped volumes and boundary area vectors with the scalar Q1 functions:
@@ -91,12 +190,21 @@ namespace pg
               if (edge_done[line->index()])
                 continue;
               edge_done[line->index()] = true;
+              // with mirror planes, the edge and its images at particles
+              // on a plane: 2^m copies, m the planes that hold the
+              // particle but not the edge
+              const unsigned int common = vertex_planes[line->vertex_index(
+                                            0)] &
+                                          vertex_planes[line->vertex_index(1)];
               for (unsigned int e = 0; e < 2; ++e)
                 {
                   const unsigned int k =
                     particle_of_vertex[line->vertex_index(e)];
-                  spacings[k] += line->diameter();
-                  ++n_edges[k];
+                  const unsigned int copies =
+                    1u << (__builtin_popcount(
+                      vertex_planes[line->vertex_index(e)] & ~common));
+                  spacings[k] += copies * line->diameter();
+                  n_edges[k] += copies;
                 }
             }
 
@@ -115,7 +223,8 @@ namespace pg
                               fe_face_values.normal_vector(q) *
                               fe_face_values.JxW(q);
               }
-            else if (cell->face(f)->at_boundary())
+            else if (cell->face(f)->at_boundary() &&
+                     !is_mirror_face(cell->face(f)))
               {
                 fe_face_values.reinit(
                   typename Triangulation<dim>::active_cell_iterator(cell),
@@ -213,10 +322,140 @@ namespace pg
 
 
   template <int dim>
+  void
+  ParticleSet<dim>::add_mirror_images(const double reach)
+  {
+    const unsigned int n_planes = mirror_planes.size();
+    for (unsigned int k = 0; k < n_real; ++k)
+      for (unsigned int mask = 1; mask < (1u << n_planes); ++mask)
+        {
+          if ((mask & plane_masks[k]) != 0)
+            continue; // a plane through k does not move it
+          Point<dim> x      = positions[k];
+          bool       within = true;
+          for (unsigned int p = 0; p < n_planes; ++p)
+            if (mask & (1u << p))
+              {
+                const MirrorPlane &plane = mirror_planes[p];
+                within = within && (std::abs(x[plane.axis] - plane.offset) <=
+                                    reach * (1. + 1e-12));
+                x[plane.axis] = 2. * plane.offset - x[plane.axis];
+              }
+          if (!within)
+            continue;
+          image_indices[k][mask] = positions.size();
+          image_originals.push_back(k);
+          image_masks.push_back(mask);
+          positions.push_back(x);
+          spacings.push_back(spacings[k]);
+          dofs.push_back(dofs[k]);
+        }
+  }
+
+
+
+  template <int dim>
   unsigned int
   ParticleSet<dim>::n_particles() const
   {
+    return n_real;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ParticleSet<dim>::n_particles_and_images() const
+  {
     return positions.size();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ParticleSet<dim>::n_mirror_planes() const
+  {
+    return mirror_planes.size();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ParticleSet<dim>::mirror_plane_axis(const unsigned int p) const
+  {
+    AssertIndexRange(p, mirror_planes.size());
+    return mirror_planes[p].axis;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ParticleSet<dim>::original(const unsigned int j) const
+  {
+    AssertIndexRange(j, positions.size());
+    return j < n_real ? j : image_originals[j - n_real];
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ParticleSet<dim>::mirror_mask(const unsigned int j) const
+  {
+    AssertIndexRange(j, positions.size());
+    return j < n_real ? 0 : image_masks[j - n_real];
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ParticleSet<dim>::on_mirror_planes(const unsigned int k) const
+  {
+    AssertIndexRange(k, n_real);
+    return plane_masks[k];
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ParticleSet<dim>::mirror_image(const unsigned int k,
+                                 const unsigned int mask) const
+  {
+    AssertIndexRange(k, n_real);
+    const unsigned int j = image_indices[k][mask & ~plane_masks[k]];
+    AssertThrow(j != numbers::invalid_unsigned_int, ExcInternalError());
+    return j;
+  }
+
+
+
+  template <int dim>
+  double
+  ParticleSet<dim>::mirror_sign(const unsigned int j,
+                                const unsigned int c) const
+  {
+    if (j < n_real || c >= dim)
+      return 1.;
+    const unsigned int mask = image_masks[j - n_real];
+    for (unsigned int p = 0; p < mirror_planes.size(); ++p)
+      if ((mask & (1u << p)) && mirror_planes[p].axis == c)
+        return -1.;
+    return 1.;
+  }
+
+
+
+  template <int dim>
+  double
+  ParticleSet<dim>::member_volume(const unsigned int j) const
+  {
+    const unsigned int k = original(j);
+    return volumes[k] * (1u << __builtin_popcount(plane_masks[k]));
   }
 
 

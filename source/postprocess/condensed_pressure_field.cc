@@ -54,7 +54,8 @@ namespace pg
             for (unsigned int c = 0; c < dim; ++c)
               y[b][c] = particles.position(members[b])[c] -
                         particles.position(k)[c] +
-                        u_all[particles.dof(members[b], c)];
+                        particles.mirror_sign(members[b], c) *
+                          u_all[particles.dof(members[b], c)];
           if (ppg)
             view.family_elements->build_master_table(k, master_table);
           const QuadratureTable<dim> &volumetric_table =

@@ -41,8 +41,14 @@ namespace pg
           double         volume = 0;
           for (const unsigned int j : view.families->members(k))
             {
-              mean += particles.volume(j) * F[j];
-              volume += particles.volume(j);
+              // a mirror image's F is its original's, reflected
+              Tensor<2, dim> F_j = F[particles.original(j)];
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = 0; b < dim; ++b)
+                  F_j[a][b] *=
+                    particles.mirror_sign(j, a) * particles.mirror_sign(j, b);
+              mean += particles.member_volume(j) * F_j;
+              volume += particles.member_volume(j);
             }
           mean /= volume;
           oscillation += particles.volume(k) * (F[k] - mean).norm_square();

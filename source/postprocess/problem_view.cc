@@ -23,7 +23,8 @@ namespace pg
             {
               const double y = particles.position(members[b])[i] -
                                particles.position(k)[i] +
-                               u[particles.dof(members[b], i)];
+                               particles.mirror_sign(members[b], i) *
+                                 u[particles.dof(members[b], i)];
               for (unsigned int j = 0; j < dim; ++j)
                 F[i][j] += y * B[b][j];
             }

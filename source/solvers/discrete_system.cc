@@ -370,7 +370,7 @@ namespace pg
           unit_stress_residual(discretization.families,
                                discretization.owned_families,
                                discretization.stabilisation_tables,
-                               discretization.particles.n_particles(),
+                               discretization.particles,
                                comm));
       }
     const std::vector<Tensor<1, dim>> u1_unit_stress =
@@ -378,7 +378,7 @@ namespace pg
         unit_stress_residual(discretization.families,
                              discretization.owned_families,
                              discretization.family_tables,
-                             discretization.particles.n_particles(),
+                             discretization.particles,
                              comm) :
         std::vector<Tensor<1, dim>>();
     const CorrectionFactors<dim> factors =

@@ -180,7 +180,7 @@ main(int argc, char **argv)
     unit_stress_residual(fixture.families,
                          owned,
                          tables,
-                         particles.n_particles(),
+                         particles,
                          MPI_COMM_WORLD);
   double worst = 0;
   for (unsigned int k = 0; k < particles.n_particles(); ++k)

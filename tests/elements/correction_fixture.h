@@ -45,7 +45,7 @@ correct(const ParticleFixture<dim> &fixture,
   const auto d0 = unit_stress_residual(fixture.families,
                                        owned_families,
                                        result.tables,
-                                       n,
+                                       fixture.particles,
                                        MPI_COMM_WORLD);
 
   system.reinit(fixture.particles,
@@ -76,7 +76,7 @@ correct(const ParticleFixture<dim> &fixture,
   result.unit_stress = unit_stress_residual(fixture.families,
                                             owned_families,
                                             result.tables,
-                                            n,
+                                            fixture.particles,
                                             MPI_COMM_WORLD);
   return result;
 }

@@ -25,6 +25,14 @@ namespace pg
       /** Boundary id and component mask (x, y, z) of each Dirichlet part. */
       std::vector<std::pair<types::boundary_id, std::vector<bool>>> dirichlet;
       std::vector<types::boundary_id>                               symmetry;
+      /**
+       * 'Symmetry treatment': 'mirror' (a particle within a horizon of a
+       * symmetry plane gets the mirror images of the particles across it
+       * as family members, so that a half or quarter model equals the
+       * full body) or 'constraint' (the dissertation's: n . u = 0 only,
+       * the families end at the plane).
+       */
+      bool mirror_symmetry = true;
       std::vector<types::boundary_id>                               neumann;
       /** Boundary ids loaded by sigma . n from 'Boundary stress'. */
       std::vector<types::boundary_id> neumann_stress;

@@ -64,6 +64,9 @@ namespace pg
      * delta + h/2 for CPD with partial volumes), the CPD interactions, the
      * family elements (PBG U1 for CPD: the particle deformation gradients
      * of the output), the owned families and their quadrature tables.
+     * With @p mirror_symmetry_ids ('Symmetry treatment = mirror') the
+     * particles within a horizon of those planes get mirror images, which
+     * join the families (ParticleSet::add_mirror_images()).
      * Finally the relevant DoFs and the mesh diameter. Adds the wall times
      * (s) to time_mesh, time_setup and time_shape. Call once.
      */
@@ -72,7 +75,8 @@ namespace pg
       const FormulationCode            &formulation,
       const Parameters::Discretization &discretization_parameters,
       const Parameters::Cpd            &cpd_parameters,
-      const std::function<bool(const CellIterator &)> &loaded_by_face_traction);
+      const std::function<bool(const CellIterator &)> &loaded_by_face_traction,
+      const std::vector<types::boundary_id>           &mirror_symmetry_ids = {});
 
     /** 'Geometry', replaced per mesh by the inf-sup analysis. */
     Parameters::Geometry geometry;

@@ -166,6 +166,13 @@ namespace pg
     classify_rows();
 
     /**
+     * Mirror symmetry planes: the rows and factors of the particles on a
+     * plane keep the directions parallel to it.
+     */
+    void
+    restrict_to_mirror_planes();
+
+    /**
      * Fix alpha at particles of @p surface spread over the boundary when
      * the system has no free surface or the option is p.
      */

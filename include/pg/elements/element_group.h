@@ -61,6 +61,14 @@ namespace pg
   };
 
   /**
+   * Turn the residual and tangent of an element's local DoFs into those of
+   * the global DoFs, local DoF i being @p signs[i] times global DoF i:
+   * r_i *= s_i, K_ij *= s_i s_j.
+   */
+  void
+  apply_dof_signs(const std::vector<double> &signs, LocalSystem &local);
+
+  /**
    * Everything that assembles is an element group (architecture.md section
    * 7): the Q1 cells, the PG families, the CPD interactions, later the mixed
    * cells and families. A group knows its locally owned elements, their DoF
@@ -88,6 +96,17 @@ namespace pg
     virtual void
     get_dof_indices(const unsigned int                    e,
                     std::vector<types::global_dof_index> &dofs) const = 0;
+
+    /**
+     * The sign of each DoF of get_dof_indices(): the element's local DoF i
+     * is signs[i] times the global DoF dofs[i] (-1 for the reflected
+     * components of a mirror image, ParticleSet::mirror_sign()). Empty if
+     * all are +1 (the default). assemble() reads u with these signs; the
+     * Assembler applies them to the local residual and tangent
+     * (apply_dof_signs()).
+     */
+    virtual void
+    get_dof_signs(const unsigned int e, std::vector<double> &signs) const;
 
     /**
      * The couplings of element @p e in the sparsity pattern; by default

@@ -9,6 +9,7 @@
 #include <pg/shape_functions/shape_functions.h>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace pg
@@ -191,8 +192,28 @@ namespace pg
      * family j's master gradient for node k at the master, -t at j; PPG2:
      * family k's master gradient for j at j, -t at the master).
      */
-    const Tensor<1, dim> &
+    Tensor<1, dim>
     ppg_test_vector(const unsigned int k, const unsigned int j) const;
+
+    /**
+     * For member @p j of family @p k: the particle whose family holds the
+     * member's own test functions (its original, for a mirror image) and
+     * the index of k (or of k's image across the member's planes) in it.
+     */
+    std::pair<unsigned int, unsigned int>
+    member_family_index(const unsigned int k, const unsigned int j) const;
+
+  public:
+    /**
+     * The share of family @p k in the model: V^k over its member volume,
+     * 1/2^m for a master on m mirror symmetry planes (its family is its
+     * own mirror image, shared with the mirrored body), 1 elsewhere. The
+     * weights of its table carry it.
+     */
+    double
+    family_share(const unsigned int k) const;
+
+  private:
 
     /** correct() of the table of family @p k. */
     void
@@ -267,29 +288,29 @@ namespace pg
           family_volume += v;
         const bool u1 = (formulation.points == FormulationCode::Points::u1);
         const unsigned int n_points = u1 ? 1 : n;
+        const double       share    = family_share(k);
         Tensor<2, dim>     weighted_projector;
         for (unsigned int q = 0; q < n_points; ++q)
           {
             const double w =
-              u1 ? geom.volumes[0] :
-                   geom.volumes[0] * geom.volumes[q] / family_volume;
+              share * (u1 ? geom.volumes[0] :
+                            geom.volumes[0] * geom.volumes[q] / family_volume);
             weighted_projector += w * projector(geom, q);
           }
         for (unsigned int a = 0; a < n; ++a)
           add(members[a], k, diagonal(phi[k][a]) * weighted_projector);
         return;
       }
+    const double share = family_share(k);
     for (unsigned int j = 1; j < n; ++j)
       {
-        const double w = geom.volumes[j];
+        const double w = share * geom.volumes[j];
         if (formulation.method == Method::ppg1)
           {
             // test vectors +-(g^{jjk} + phi^{jk} alpha^j) at nodes k and j
-            const auto family_j = families.members(members[j]);
-            const auto found =
-              std::lower_bound(family_j.begin() + 1, family_j.end(), k);
-            const Tensor<2, dim> c =
-              w * diagonal(phi[members[j]][found - family_j.begin()]);
+            // (for a mirror image j, phi of its original: phi is even)
+            const auto [member, index] = member_family_index(k, j);
+            const Tensor<2, dim> c     = w * diagonal(phi[member][index]);
             add(k, members[j], c);
             add(members[j], members[j], -c);
           }

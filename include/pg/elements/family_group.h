@@ -35,6 +35,14 @@ namespace pg
     get_dof_indices(const unsigned int                    e,
                     std::vector<types::global_dof_index> &dofs) const override;
 
+    /**
+     * -1 for the reflected displacement components of the family's mirror
+     * images (empty if it has none); the extra nodal fields are even.
+     */
+    void
+    get_dof_signs(const unsigned int   e,
+                  std::vector<double> &signs) const override;
+
     std::string
     element_name(const unsigned int e) const override;
 
@@ -45,7 +53,10 @@ namespace pg
     non_finite_hint() const override;
 
   protected:
-    /** The DoFs of family @p e and the positions y of its members at @p u. */
+    /**
+     * The DoFs of family @p e and the positions y of its members at @p u
+     * (a mirror image's displacement is its original's, reflected).
+     */
     void
     gather(const unsigned int                    e,
            const LinearAlgebra::Vector          &u,

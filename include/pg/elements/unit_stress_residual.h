@@ -32,7 +32,7 @@ namespace pg
   unit_stress_residual(const FamilySet<dim>                    &families,
                        const std::vector<unsigned int>         &owned_families,
                        const std::vector<QuadratureTable<dim>> &tables,
-                       const unsigned int                       n_particles,
+                       const ParticleSet<dim>                  &particles,
                        const MPI_Comm                           comm);
 
   /**

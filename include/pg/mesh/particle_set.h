@@ -39,8 +39,84 @@ namespace pg
     reinit(const DoFHandler<dim>   &dof_handler,
            const std::vector<bool> &meshfree);
 
+    /**
+     * As above with the mirror symmetry planes of the boundary ids
+     * @p mirror_ids ('Symmetry treatment = mirror'): their faces are no
+     * boundary (no area vectors, no corners or edges there), a particle's
+     * spacing counts the mirrored cell edges, and the particles on a
+     * plane are recorded (on_mirror_planes()). Each plane must be normal
+     * to a coordinate axis, and no two planes parallel; throws
+     * ExcBadParameter naming 'Boundary conditions/Symmetry treatment'
+     * otherwise. Call add_mirror_images() next.
+     */
+    void
+    reinit(const DoFHandler<dim>                 &dof_handler,
+           const std::vector<bool>               &meshfree,
+           const std::vector<types::boundary_id> &mirror_ids);
+
+    /**
+     * Add the mirror image of every particle within @p reach (length, the
+     * largest horizon) of one, two or three of the mirror planes, across
+     * each combination of them that moves it (at most 2^planes - 1
+     * images). Images are numbered from n_particles() on; they are family
+     * members only: position(), spacing() and dof() take their indices
+     * (dof() gives the original's DoF, mirror_sign() the sign of its
+     * component), volume() does not (member_volume()).
+     */
+    void
+    add_mirror_images(const double reach);
+
+    /** The real particles (images not counted). */
     unsigned int
     n_particles() const;
+
+    /** Real particles and their mirror images. */
+    unsigned int
+    n_particles_and_images() const;
+
+    /** The number of mirror planes (0 without 'Symmetry treatment = mirror'). */
+    unsigned int
+    n_mirror_planes() const;
+
+    /** The coordinate axis to which mirror plane @p p is normal. */
+    unsigned int
+    mirror_plane_axis(const unsigned int p) const;
+
+    /** The particle whose image @p j is (j itself for a real particle). */
+    unsigned int
+    original(const unsigned int j) const;
+
+    /** The mirror planes across which image @p j lies (bit p: plane p). */
+    unsigned int
+    mirror_mask(const unsigned int j) const;
+
+    /** The mirror planes real particle @p k lies on (bit p: plane p). */
+    unsigned int
+    on_mirror_planes(const unsigned int k) const;
+
+    /**
+     * The image of real particle @p k across the planes @p mask: k itself
+     * for the planes that k lies on. Throws ExcInternalError if that image
+     * was not made (beyond the reach of add_mirror_images()).
+     */
+    unsigned int
+    mirror_image(const unsigned int k, const unsigned int mask) const;
+
+    /**
+     * +1, or -1 for a displacement component @p c < dim of an image
+     * across a plane normal to axis c: u_c(image) = mirror_sign(j, c)
+     * u_c(original(j)). Extra nodal fields (pressure) are even: +1.
+     */
+    double
+    mirror_sign(const unsigned int j, const unsigned int c) const;
+
+    /**
+     * The volume of particle or image @p j as a family member: the lumped
+     * volume in the body that the mirror planes complete (2^m volume() for
+     * a particle on m planes), volume() without mirror planes.
+     */
+    double
+    member_volume(const unsigned int j) const;
 
     /** Reference position X^k. */
     const Point<dim> &
@@ -115,6 +191,23 @@ namespace pg
     total_volume() const;
 
   private:
+    /** A mirror plane X[axis] = offset of the boundary id. */
+    struct MirrorPlane
+    {
+      unsigned int       axis;
+      double             offset;
+      types::boundary_id boundary_id;
+    };
+    std::vector<MirrorPlane> mirror_planes;
+    /** Real particles. */
+    unsigned int n_real = 0;
+    /** Per real particle: the planes it lies on. */
+    std::vector<unsigned int> plane_masks;
+    /** Per image (index - n_real): its original and its planes. */
+    std::vector<unsigned int> image_originals, image_masks;
+    /** Per real particle and mask: the image (invalid if not made). */
+    std::vector<std::array<unsigned int, 8>> image_indices;
+
     std::vector<Point<dim>>                                   positions;
     std::vector<double>                                       volumes;
     std::vector<double>                                       spacings;
