@@ -425,7 +425,10 @@ namespace pg
         for (const unsigned int a : members)
           for (unsigned int c = 0; c < dim; ++c)
             columns.push_back(particles->dof(a, c));
+        // (a mirror image has its original's DoFs)
         std::sort(columns.begin(), columns.end());
+        columns.erase(std::unique(columns.begin(), columns.end()),
+                      columns.end());
         // the master's rows couple to every member (k to a, and a to a for
         // a = k)
         for (unsigned int i = 0; i < dim; ++i)

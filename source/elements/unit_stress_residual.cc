@@ -52,9 +52,10 @@ namespace pg
     for (unsigned int k = 0; k < particles.n_particles(); ++k)
       if (particles.boundary_area_vectors(k).empty() &&
           !particles.on_interface(k))
-        largest = std::max(largest,
-                           unit_stress[k].norm() /
-                             std::pow(particles.spacing(k), dim - 1));
+        largest = std::max(
+          largest,
+          particles.parallel_to_mirror_planes(k, unit_stress[k]).norm() /
+            std::pow(particles.spacing(k), dim - 1));
     return largest;
   }
 
@@ -75,15 +76,23 @@ namespace pg
           continue;
         // least squares d^k = sum_b c_b n_b (the normals are independent at
         // corners; parts with parallel normals share by projection)
+        // (on mirror planes: the parts parallel to them, see
+        // ParticleSet::parallel_to_mirror_planes())
         const unsigned int          m = areas.size();
         std::vector<Tensor<1, dim>> n;
         for (const auto &area : areas)
-          n.push_back(area.second / area.second.norm());
+          {
+            const Tensor<1, dim> a =
+              particles.parallel_to_mirror_planes(k, area.second);
+            n.push_back(a / a.norm());
+          }
+        const Tensor<1, dim> d =
+          particles.parallel_to_mirror_planes(k, unit_stress[k]);
         FullMatrix<double> G(m, m);
         Vector<double>     rhs(m), c(m);
         for (unsigned int a = 0; a < m; ++a)
           {
-            rhs(a) = n[a] * unit_stress[k];
+            rhs(a) = n[a] * d;
             for (unsigned int b = 0; b < m; ++b)
               G(a, b) = n[a] * n[b];
           }

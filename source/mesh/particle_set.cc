@@ -451,6 +451,21 @@ namespace pg
 
 
   template <int dim>
+  Tensor<1, dim>
+  ParticleSet<dim>::parallel_to_mirror_planes(const unsigned int    k,
+                                              const Tensor<1, dim> &v) const
+  {
+    AssertIndexRange(k, n_real);
+    Tensor<1, dim> w = v;
+    for (unsigned int p = 0; p < mirror_planes.size(); ++p)
+      if (plane_masks[k] & (1u << p))
+        w[mirror_planes[p].axis] = 0.;
+    return w;
+  }
+
+
+
+  template <int dim>
   double
   ParticleSet<dim>::member_volume(const unsigned int j) const
   {

@@ -118,6 +118,16 @@ namespace pg
     double
     member_volume(const unsigned int j) const;
 
+    /**
+     * @p v without its components normal to the mirror planes that real
+     * particle @p k lies on: the part of a row of particle k that the
+     * symmetry does not fix (the normal part of its unit-stress residual
+     * is the other half's, like a reaction).
+     */
+    Tensor<1, dim>
+    parallel_to_mirror_planes(const unsigned int    k,
+                              const Tensor<1, dim> &v) const;
+
     /** Reference position X^k. */
     const Point<dim> &
     position(const unsigned int k) const;
