@@ -2,9 +2,9 @@
 // lattice counts behind the nonzeros per row; the predicted mesh sizes
 // against the meshes create_mesh() builds (generated meshes exactly, a mesh
 // file as an upper bound); the estimate for prm/cook_membrane_2d.prm and
-// for a larger FEM run against their measured peak memory (within a factor
-// 3); and the message of a mesh too large for the machine, which
-// 'Memory check = false' silences.
+// for larger FEM and PG runs of it against their measured peak memory
+// (within a factor 3); and the message of a mesh too large for the machine,
+// which 'Memory check = false' silences.
 
 #include <pg/base/exceptions.h>
 #include <pg/base/formulation_code.h>
@@ -18,8 +18,10 @@
 
 #include "../tests.h"
 
+#include <cmath>
 #include <fstream>
 #include <string>
+#include <tuple>
 
 
 namespace
@@ -71,10 +73,11 @@ namespace
                                         ExcInternalError());
                           });
     deallog << name << ": called " << (called ? "yes" : "no") << ", cells "
-            << predicted.n_cells << " (built " << triangulation.n_active_cells()
-            << "), vertices " << predicted.n_vertices << " (built "
+            << static_cast<long long>(predicted.n_cells) << " (built "
+            << triangulation.n_active_cells() << "), vertices "
+            << static_cast<long long>(predicted.n_vertices) << " (built "
             << triangulation.n_used_vertices() << "), spacing "
-            << std::setprecision(4) << predicted.spacing << std::endl;
+            << std::round(1e4 * predicted.spacing) / 1e4 << std::endl;
   }
 } // namespace
 
@@ -87,8 +90,9 @@ main()
 
   for (const unsigned int dim : {2u, 3u})
     for (const double radius : {1.51, 2.51, 3.02, 5.02})
-      deallog << "lattice points within " << radius << " in " << dim
-              << "-D: " << pg::lattice_points_in_ball(dim, radius) << std::endl;
+      deallog << "lattice points within " << radius << " in " << dim << "-D: "
+              << static_cast<long long>(pg::lattice_points_in_ball(dim, radius))
+              << std::endl;
 
   compare<2>("hyper rectangle 3 x 2, r2",
              "set Upper corner = 3, 2\nset Subdivisions = 3, 2\n"
@@ -114,26 +118,37 @@ main()
              "set Mesh = file\nset File name = memory_estimate_01.msh\n"
              "set Global refinement = 2\n");
 
-  // prm/cook_membrane_2d.prm: BCPBG Unl, horizon 2.51, 16 x 16 cells.
-  // Measured (Debug build, /usr/bin/time -v, maximum resident set size):
-  // 203 MB.
-  {
-    const pg::Parameters::Geometry g =
-      geometry("set Mesh = cook membrane\nset Subdivisions = 8\n"
-               "set Global refinement = 1\n");
-    const pg::MemoryEstimate e =
-      pg::estimate_memory<2>(pg::Mesh::predict_mesh_size<2>(g),
-                             pg::parse_formulation_code("BCPBG Unl TL"),
-                             discretization(2.51));
-    const double measured = 203e6;
-    deallog << "cook_membrane_2d: " << e.n_dofs << " DoFs, family "
-            << e.family_size << ", nonzeros per row " << e.nonzeros_per_row
-            << ", estimate " << std::setprecision(3) << e.bytes / 1e6
-            << " MB, within a factor 3 of the measured " << measured / 1e6
-            << " MB: "
-            << (e.bytes < 3 * measured && measured < 3 * e.bytes ? "yes" : "NO")
-            << std::endl;
-  }
+  // prm/cook_membrane_2d.prm (BCPBG Unl, horizon factor 2.51, 8 x 8
+  // cells, refinement 1) and two larger variants of it (1 load step, no
+  // VTU), measured with the Debug build of 2026-12-07 (/usr/bin/time -v,
+  // maximum resident set size, KiB x 1024): 373,036 KiB at 578 DoFs (the
+  // process alone, Debug: about 380 MB), FEM at refinement 5 694,052 KiB
+  // at 132,098 DoFs, BCPBG Unl at refinement 4 1,264,192 KiB at 33,282
+  // DoFs (181 nonzeros per row).
+  for (const auto &[formulation, refinement, measured] :
+       {std::make_tuple("BCPBG Unl TL", 1, 373036 * 1024.),
+        std::make_tuple("FEM", 5, 694052 * 1024.),
+        std::make_tuple("BCPBG Unl TL", 4, 1264192 * 1024.)})
+    {
+      const pg::Parameters::Geometry g =
+        geometry("set Mesh = cook membrane\nset Subdivisions = 8\n"
+                 "set Global refinement = " +
+                 std::to_string(refinement) + "\n");
+      const pg::MemoryEstimate e =
+        pg::estimate_memory<2>(pg::Mesh::predict_mesh_size<2>(g),
+                               pg::parse_formulation_code(formulation),
+                               discretization(2.51));
+      deallog << "cook membrane, " << formulation << ", refinement "
+              << refinement << ": " << static_cast<long long>(e.n_dofs)
+              << " DoFs, family " << e.family_size << ", nonzeros per row "
+              << e.nonzeros_per_row << ", estimate "
+              << std::round(e.bytes / 1e6)
+              << " MB, within a factor 3 of the measured "
+              << std::round(measured / 1e6) << " MB: "
+              << (e.bytes < 3 * measured && measured < 3 * e.bytes ? "yes" :
+                                                                     "NO")
+              << std::endl;
+    }
 
   // the typo of issue 45 and its override
   {
