@@ -34,8 +34,9 @@ namespace pg
         prm.declare_entry("Upper corner",
                           "1, 1",
                           Patterns::List(Patterns::Double()),
-                          "Hyper rectangle: upper corner, dim coordinates. "
-                          "Units: length.");
+                          "Hyper rectangle: upper corner, dim coordinates, "
+                          "each greater than that of 'Lower corner'. Units: "
+                          "length.");
         prm.declare_entry("Subdivisions",
                           "1, 1",
                           Patterns::List(Patterns::Integer(1)),
