@@ -20,7 +20,7 @@ namespace
   run(const unsigned int load_steps,
       const unsigned int maximum_cuts,
       const unsigned int easy_iterations,
-      const std::string &failure      = "too hard",
+      const std::string &failure        = "too hard",
       const double       nan_load_above = 2.)
   {
     Parameters::Loading parameters;
