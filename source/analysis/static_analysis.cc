@@ -1,6 +1,11 @@
 #include <pg/analysis/static_analysis.h>
 #include <pg/solvers/load_stepper.h>
 
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+#include <string>
+
 namespace pg
 {
   namespace Analysis
@@ -60,6 +65,25 @@ namespace pg
         access.write_files(step, t);
       };
       stepping.last_failure = last_failure;
+      // After a NaN or inf on any rank: f_ext at t, one residual assembly
+      // at u = 0 (collective; it throws on a NaN or inf on any rank).
+      stepping.load_is_finite = [&](const double t) {
+        if (!Utilities::MPI::logical_or(last_failure().find("NaN or inf") !=
+                                          std::string::npos,
+                                        system.communicator()))
+          return true;
+        system.set_time(t);
+        LinearAlgebra::Vector f_ext;
+        try
+          {
+            system.external_force(f_ext);
+          }
+        catch (const std::exception &)
+          {
+            return false;
+          }
+        return std::isfinite(f_ext.l2_norm());
+      };
       LoadStepper(prm.loading, prm.output.directory, access.pcout)
         .run(stepping, last_step + 1);
       access.finalize(prm.loading.load_steps, 1.);

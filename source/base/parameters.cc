@@ -312,6 +312,39 @@ namespace pg
                                           (dim == 2 ? "'0, 0'." :
                                                       "'0, 0, 0'.")));
           }
+      // Upper above lower in every coordinate (issue 45, item 3): a box
+      // given the wrong way round was built, and reported only later, by
+      // the points, as "this point lies outside the mesh".
+      if (geometry.mesh == "hyper rectangle")
+        {
+          const auto number = [](const double x) {
+            std::ostringstream s;
+            s << x;
+            return s.str();
+          };
+          const auto text = [&](const std::vector<double> &corner) {
+            std::string value;
+            for (const double x : corner)
+              value += (value.empty() ? "" : ", ") + number(x);
+            return value;
+          };
+          std::string wrong;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (!(geometry.upper_corner[d] > geometry.lower_corner[d]))
+              wrong += std::string(wrong.empty() ? "" : ", ") + "xyz"[d] +
+                       ": " + number(geometry.upper_corner[d]) +
+                       " <= " + number(geometry.lower_corner[d]);
+          AssertThrow(wrong.empty(),
+                      ExcBadParameter("Geometry/Upper corner",
+                                      text(geometry.upper_corner),
+                                      "it must exceed 'Geometry/Lower "
+                                      "corner' <" +
+                                        text(geometry.lower_corner) +
+                                        "> in every coordinate (" + wrong +
+                                        "): the hyper rectangle is the box "
+                                        "from the lower to the upper "
+                                        "corner."));
+        }
       AssertThrow((geometry.mesh != "hyper rectangle" &&
                    geometry.mesh != "cook membrane") ||
                     geometry.subdivisions.size() == 1 ||

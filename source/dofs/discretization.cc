@@ -1,5 +1,6 @@
 #include <pg/base/exceptions.h>
 #include <pg/dofs/discretization.h>
+#include <pg/dofs/memory_estimate.h>
 #include <pg/dofs/relevant_dofs.h>
 #include <pg/mesh/mesh_generator.h>
 #include <pg/shape_functions/shape_functions.h>
@@ -34,7 +35,25 @@ namespace pg
     const std::vector<types::boundary_id>           &mirror_symmetry_ids)
   {
     Timer timer;
-    Mesh::create_mesh(geometry, triangulation, &mesh_notes);
+    // the memory check, before the mesh is built (issue 45, item 1); every
+    // rank compares with the smallest memory of the ranks, so that all of
+    // them stop alike
+    const double memory =
+      Utilities::MPI::min(physical_memory(), triangulation.get_communicator());
+    const auto check_size = [&](const Mesh::MeshSize &size) {
+      const bool cpd_partial =
+        formulation.method == FormulationCode::Method::cpd &&
+        cpd_parameters.partial_volumes;
+      check_memory(geometry,
+                   size,
+                   formulation.text,
+                   estimate_memory<dim>(size,
+                                        formulation,
+                                        discretization_parameters,
+                                        cpd_partial ? 0.5 : 0.),
+                   memory);
+    };
+    Mesh::create_mesh(geometry, triangulation, &mesh_notes, check_size);
     time_mesh += timer.wall_time();
     timer.restart();
     const bool fem = (formulation.method == FormulationCode::Method::fem);

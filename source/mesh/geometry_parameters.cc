@@ -34,8 +34,9 @@ namespace pg
         prm.declare_entry("Upper corner",
                           "1, 1",
                           Patterns::List(Patterns::Double()),
-                          "Hyper rectangle: upper corner, dim coordinates. "
-                          "Units: length.");
+                          "Hyper rectangle: upper corner, dim coordinates, "
+                          "each greater than that of 'Lower corner'. Units: "
+                          "length.");
         prm.declare_entry("Subdivisions",
                           "1, 1",
                           Patterns::List(Patterns::Integer(1)),
@@ -92,6 +93,17 @@ namespace pg
                           "0",
                           Patterns::Integer(0, 12),
                           "Number of uniform refinements of the mesh.");
+        prm.declare_entry(
+          "Memory check",
+          "true",
+          Patterns::Bool(),
+          "Before the mesh is built, estimate the memory of the run from the "
+          "mesh size ('Subdivisions' and 'Global refinement', or the cells "
+          "of the mesh file), the DoFs and the formulation (the measured "
+          "bytes per DoF of doc/memory.md, scaled with the matrix nonzeros "
+          "per row that the horizon gives), and stop with a message if the "
+          "estimate exceeds the machine's memory (MemTotal of /proc/meminfo). "
+          "'false' skips the check, for those who know that the run fits.");
         prm.declare_entry("Distortion",
                           "0",
                           Patterns::Double(0., 0.45),
@@ -140,6 +152,7 @@ namespace pg
         file_name           = prm.get("File name");
         coincident_vertices = prm.get("Coincident vertices");
         global_refinement   = prm.get_integer("Global refinement");
+        memory_check        = prm.get_bool("Memory check");
         distortion          = prm.get_double("Distortion");
         random_seed         = prm.get_integer("Random seed");
         meshfree_region     = prm.get("Meshfree region");

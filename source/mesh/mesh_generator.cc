@@ -148,6 +148,19 @@ namespace pg
 
 
 
+      /** The radial layers of the coarse plate with a hole. */
+      unsigned int
+      plate_with_hole_layers(const double L, const double R)
+      {
+        if (!(R > 0. && R < L))
+          return 1;
+        return std::max(1,
+                        static_cast<int>(std::ceil(
+                          std::log(L / R) / std::log(1. + numbers::PI / 4.))));
+      }
+
+
+
       /**
        * The quarter plate [0,L]^2 minus the disk of radius R at the origin.
        * Two halves, split at the 45-degree diagonal, each cut into layers
@@ -173,10 +186,7 @@ namespace pg
                                     "it must be positive and smaller than "
                                     "'Plate size' in subsection 'Geometry'."));
 
-        const unsigned int n_layers =
-          std::max(1,
-                   static_cast<int>(std::ceil(
-                     std::log(L / R) / std::log(1. + numbers::PI / 4.))));
+        const unsigned int n_layers = plate_with_hole_layers(L, R);
 
         // The unit directions of the rays and their ends on the outer edges,
         // written out rather than computed from angles so that the vertices
@@ -441,15 +451,101 @@ namespace pg
 
 
     template <int dim>
+    MeshSize
+    predict_mesh_size(const Parameters::Geometry &parameters)
+    {
+      const double refined = std::pow(2., parameters.global_refinement);
+      // cells per direction after refinement, and the measure
+      std::vector<double> n(dim, 1.);
+      double              measure = 1.;
+      if (parameters.mesh == "plate with hole")
+        {
+          const double L = parameters.plate_size;
+          const double R = parameters.hole_radius;
+          n              = std::vector<double>(dim, 1.);
+          n[0]           = plate_with_hole_layers(L, R) * refined;
+          n[1]           = 2. * refined;
+          measure        = L * L - numbers::PI * R * R / 4.;
+        }
+      else
+        {
+          Assert(parameters.mesh == "hyper rectangle" ||
+                   parameters.mesh == "cook membrane",
+                 ExcMessage("predict_mesh_size() of a generated mesh only"));
+          const std::vector<unsigned int> s =
+            subdivisions_per_direction<dim>(parameters);
+          for (unsigned int d = 0; d < dim; ++d)
+            n[d] = s[d] * refined;
+          if (parameters.mesh == "cook membrane")
+            // the tapered panel: 48 wide, 44 high on the left, 16 on the
+            // right
+            measure =
+              48. * (44. + 16.) / 2. * (dim == 3 ? parameters.thickness : 1.);
+          else
+            for (unsigned int d = 0; d < dim; ++d)
+              measure *= (parameters.lower_corner.size() == dim &&
+                          parameters.upper_corner.size() == dim) ?
+                           std::abs(parameters.upper_corner[d] -
+                                    parameters.lower_corner[d]) :
+                           1.;
+        }
+      MeshSize size;
+      size.n_cells    = 1.;
+      size.n_vertices = 1.;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          size.n_cells *= n[d];
+          size.n_vertices *= n[d] + 1.;
+        }
+      size.n_coarse_cells =
+        size.n_cells / std::pow(refined, static_cast<double>(dim));
+      size.spacing = std::pow(measure / size.n_cells, 1. / dim);
+      return size;
+    }
+
+
+
+    template <int dim>
+    MeshSize
+    predict_mesh_size(const Parameters::Geometry &parameters,
+                      const Triangulation<dim>   &coarse)
+    {
+      const double refined = std::pow(2., parameters.global_refinement);
+      MeshSize     size;
+      size.n_coarse_cells = coarse.n_active_cells();
+      size.n_cells =
+        size.n_coarse_cells * std::pow(refined, static_cast<double>(dim));
+      // each refinement adds about one vertex per new cell, plus those of
+      // the refined boundary (an upper bound of the exact count)
+      const double n_coarse_vertices = coarse.n_used_vertices();
+      size.n_vertices =
+        parameters.global_refinement == 0 ?
+          n_coarse_vertices :
+          size.n_cells +
+            n_coarse_vertices * std::pow(refined, static_cast<double>(dim - 1));
+      size.spacing =
+        std::pow(std::abs(GridTools::volume(coarse)) / size.n_cells, 1. / dim);
+      return size;
+    }
+
+
+
+    template <int dim>
     void
-    create_mesh(const Parameters::Geometry &parameters,
-                Triangulation<dim>         &triangulation,
-                std::string                *notes)
+    create_mesh(const Parameters::Geometry                  &parameters,
+                Triangulation<dim>                          &triangulation,
+                std::string                                 *notes,
+                const std::function<void(const MeshSize &)> &check_size)
     {
       Assert(triangulation.n_cells() == 0,
              ExcMessage("create_mesh() needs an empty triangulation."));
 
       const std::string &mesh = parameters.mesh;
+      // before anything is allocated (issue 45, item 1: a typo asked for
+      // 2 x 10^10 cells)
+      if (check_size && mesh != "file" &&
+          (mesh != "plate with hole" || dim == 2))
+        check_size(predict_mesh_size<dim>(parameters));
       if (mesh == "hyper rectangle")
         {
           create_hyper_rectangle(parameters, triangulation);
@@ -469,7 +565,11 @@ namespace pg
             create_plate_with_hole(parameters, triangulation);
         }
       else if (mesh == "file")
-        read_mesh_file(parameters, triangulation, notes);
+        {
+          read_mesh_file(parameters, triangulation, notes);
+          if (check_size)
+            check_size(predict_mesh_size<dim>(parameters, triangulation));
+        }
       else
         AssertThrow(false,
                     ExcBadParameter("Geometry/Mesh",
@@ -575,14 +675,26 @@ namespace pg
 
 
 
+    template MeshSize
+    predict_mesh_size<2>(const Parameters::Geometry &);
+    template MeshSize
+    predict_mesh_size<3>(const Parameters::Geometry &);
+    template MeshSize
+    predict_mesh_size<2>(const Parameters::Geometry &,
+                         const Triangulation<2> &);
+    template MeshSize
+    predict_mesh_size<3>(const Parameters::Geometry &,
+                         const Triangulation<3> &);
     template void
     create_mesh<2>(const Parameters::Geometry &,
                    Triangulation<2> &,
-                   std::string *);
+                   std::string *,
+                   const std::function<void(const MeshSize &)> &);
     template void
     create_mesh<3>(const Parameters::Geometry &,
                    Triangulation<3> &,
-                   std::string *);
+                   std::string *,
+                   const std::function<void(const MeshSize &)> &);
 
     template double
     diameter<2>(const Triangulation<2> &);

@@ -77,6 +77,32 @@ namespace pg
                     output_directory + "'."));
               }
             stalled_before = stalled;
+            // A load that is NaN or inf at t_new stays so after any cut
+            // (issue 45, item 2); an element inverted by a too large step
+            // gives a NaN, too, but a finite residual at u = 0.
+            if (operations.load_is_finite && !operations.load_is_finite(t_new))
+              {
+                operations.give_up(step, t);
+                std::ostringstream load_factor;
+                load_factor << t_new;
+                AssertThrow(
+                  false,
+                  ExcMessage(
+                    "Load step " + std::to_string(step) +
+                    " did not converge after " + std::to_string(cuts) +
+                    (cuts == 1 ? " step cut" : " step cuts") +
+                    " (last load factor reached: " + std::to_string(t) +
+                    "): the residual is NaN or inf at load factor " +
+                    load_factor.str() +
+                    " already in the undeformed state (u = 0), so it comes "
+                    "from the loads (or the undeformed model itself), not "
+                    "from the size of the step, and a step cut cannot "
+                    "remove it. The last attempt ended "
+                    "with: " +
+                    last_failure +
+                    " The results of the converged steps are in '" +
+                    output_directory + "'."));
+              }
             if (++cuts > parameters.maximum_step_cuts)
               {
                 operations.give_up(step, t);

@@ -2,7 +2,8 @@
 # ${EXPECT} on standard error. Used by the exit_code tests; ${LAUNCHER} (if
 # set) is the MPI launcher, e.g. "mpiexec;-np;2". With ${SUMMARY} (a
 # summary.json the run must leave behind) its text must match
-# ${SUMMARY_EXPECT}, white space collapsed as for the message.
+# ${SUMMARY_EXPECT}, white space collapsed as for the message. With
+# ${FORBID}, neither standard output nor standard error may match it.
 if(DEFINED SUMMARY)
   file(REMOVE ${SUMMARY})
 endif()
@@ -24,6 +25,11 @@ endif()
 # and no stack trace (PG_ERROR_DETAILS=1 asks for them).
 if(err MATCHES "Stacktrace:|An error occurred in line")
   message(FATAL_ERROR "The message shows deal.II's source location or stack trace:\n${err}")
+endif()
+# ${FORBID} (if set): a regex that neither output may match, e.g. the line
+# of a step cut where a run must stop at once.
+if(DEFINED FORBID AND "${out}${err}" MATCHES "${FORBID}")
+  message(FATAL_ERROR "The output matches <${FORBID}>:\n${out}\n${err}")
 endif()
 if(DEFINED SUMMARY)
   if(NOT EXISTS ${SUMMARY})

@@ -3,7 +3,8 @@
 // tried, cut and grown again, the commits and reverts, and the message when
 // 'Maximum step cuts' is too small (with give_up called first); and a
 // problem whose failures are stalls on the round-off floor, which stops
-// after the second stall instead of cutting on.
+// after the second stall instead of cutting on; and a failure with a NaN or
+// inf that the load gives (load_is_finite), which stops without a cut.
 
 #include <pg/solvers/load_stepper.h>
 
@@ -19,7 +20,8 @@ namespace
   run(const unsigned int load_steps,
       const unsigned int maximum_cuts,
       const unsigned int easy_iterations,
-      const std::string &failure = "too hard")
+      const std::string &failure        = "too hard",
+      const double       nan_load_above = 2.)
   {
     Parameters::Loading parameters;
     parameters.load_steps        = load_steps;
@@ -54,6 +56,12 @@ namespace
       gave_up = true;
     };
     operations.last_failure = [&]() { return failure; };
+    if (nan_load_above < 2.)
+      operations.load_is_finite = [&](const double t) {
+        deallog << "?";
+        return failure.find("NaN or inf") == std::string::npos ||
+               t <= nan_load_above;
+      };
     deallog << load_steps << " steps, " << maximum_cuts << " cuts, easy "
             << easy_iterations << ":";
     try
@@ -91,4 +99,10 @@ main()
     5,
     4,
     "Newton stalled between 7.7e-06 and 7.8e-06 |R_0| in its last 4 iterations.");
+  // a NaN that the load gives above t = 0.9 (issue 45, item 2): step 1
+  // cuts (its failure is the step size's, the load is finite), step 2
+  // stops at once, without a cut ('?': load_is_finite asked)
+  run(2, 5, 4, "NaN or inf in the residual or tangent of Q1 cell 3.", 0.9);
+  // a NaN at a finite load (an element inverted by a too large step): cuts
+  run(1, 5, 4, "NaN or inf in the residual or tangent of Q1 cell 3.", 1.);
 }

@@ -32,6 +32,11 @@ namespace pg
       /** Mesh = file: merge | reject | keep coincident vertices. */
       std::string  coincident_vertices;
       unsigned int global_refinement;
+      /**
+       * 'Memory check': refuse a mesh whose estimated memory exceeds the
+       * machine's (pg/dofs/memory_estimate.h).
+       */
+      bool memory_check = true;
       /** Interior vertices move by up to this fraction of the local spacing. */
       double       distortion;
       unsigned int random_seed;

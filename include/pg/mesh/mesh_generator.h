@@ -6,6 +6,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,42 @@ namespace pg
   namespace Mesh
   {
     /**
+     * The size of the mesh that create_mesh() will build, known before it
+     * is built (counts as doubles: a typo can ask for 10^10 cells).
+     */
+    struct MeshSize
+    {
+      /** Active cells after 'Global refinement'. */
+      double n_cells = 0;
+      /** Vertices after 'Global refinement' (= particles of PG-everywhere). */
+      double n_vertices = 0;
+      /** Mean cell size after refinement, (measure / cells)^(1/dim). */
+      double spacing = 0;
+      /** Cells before refinement: of 'Subdivisions', or of the file. */
+      double n_coarse_cells = 0;
+    };
+
+    /**
+     * The size of a generated mesh ('hyper rectangle', 'cook membrane',
+     * 'plate with hole') from 'Subdivisions' and 'Global refinement',
+     * without building it: exact cell and vertex counts ('Hole' is not
+     * subtracted). Not for 'Mesh = file'.
+     */
+    template <int dim>
+    MeshSize
+    predict_mesh_size(const Parameters::Geometry &parameters);
+
+    /**
+     * The size after 'Global refinement' of the coarse mesh
+     * @p coarse read from a file: cells x 2^(dim r), and about as many
+     * vertices plus those of the refined surface.
+     */
+    template <int dim>
+    MeshSize
+    predict_mesh_size(const Parameters::Geometry &parameters,
+                      const Triangulation<dim>   &coarse);
+
+    /**
      * Fill the empty @p triangulation from subsection 'Geometry': the base
      * mesh with its boundary ids (and manifolds for curved boundaries), then
      * 'Global refinement', then 'Distortion' (reproducible by 'Random seed').
@@ -21,12 +58,18 @@ namespace pg
      * file, unsupported dimension, ...). What was done to a mesh file
      * (coincident vertices merged) is appended to @p notes, one line each,
      * for the banner.
+     *
+     * If given, @p check_size is called with the predicted size of the
+     * final mesh before anything is allocated for a generated mesh, and
+     * after reading, before refining, a mesh file; it may throw (the memory
+     * check of pg/dofs/memory_estimate.h).
      */
     template <int dim>
     void
-    create_mesh(const Parameters::Geometry &parameters,
-                Triangulation<dim>         &triangulation,
-                std::string                *notes = nullptr);
+    create_mesh(const Parameters::Geometry                  &parameters,
+                Triangulation<dim>                          &triangulation,
+                std::string                                 *notes = nullptr,
+                const std::function<void(const MeshSize &)> &check_size = {});
 
     /**
      * Which active cells are meshfree, indexed by active_cell_index(), from

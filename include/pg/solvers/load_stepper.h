@@ -19,7 +19,9 @@ namespace pg
    * 'Easy step iterations' Newton iterations doubles the next one again, up
    * to the rest of the load step. Two failed sub-steps in a row whose
    * residual stalled on its round-off floor (NewtonSolver::stalled()) end
-   * the run at once: a cut cannot lower that floor.
+   * the run at once: a cut cannot lower that floor. So does a NaN or inf
+   * that the loads give at the sub-step's load factor
+   * (Operations::load_is_finite).
    *
    * The stepper knows nothing of the discretization: the problem gives it
    * the operations below. The state (solution, point history) is committed
@@ -52,6 +54,16 @@ namespace pg
       std::function<void(const unsigned int step, const double t)> give_up;
       /** Why the last failed sub-step failed (for the message). */
       std::function<std::string()> last_failure;
+      /**
+       * Optional, called (on every rank) after a sub-step to load factor
+       * @p t failed: false if the sub-step failed with a NaN or inf and
+       * the residual of the undeformed state (u = 0) at @p t is not
+       * finite either. Then the NaN or inf comes from the loads (a
+       * 'Traction' or 'Body force' that is NaN or inf at @p t), not from
+       * the size of the step: no cut can remove it, and the run stops at
+       * once.
+       */
+      std::function<bool(const double t)> load_is_finite;
     };
 
     /**
