@@ -1,6 +1,8 @@
 #include <pg/base/global_reader.h>
 #include <pg/elements/element_group.h>
 
+#include <algorithm>
+
 namespace pg
 {
   template <int dim>
@@ -11,6 +13,9 @@ namespace pg
   {
     std::vector<types::global_dof_index> dofs;
     get_dof_indices(e, dofs);
+    // a mirror image has its original's DoFs: each DoF once
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
     constraints.add_entries_local_to_global(dofs, sparsity, true);
   }
 

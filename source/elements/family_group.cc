@@ -355,7 +355,11 @@ namespace pg
                             scratch.xi,
                             scratch.y,
                             scratch.volumes,
-                            stabilisation.hourglass_constants[e],
+                            // the family's share of the model (mirror
+                            // planes: FamilyElements::family_share())
+                            stabilisation.hourglass_constants[e] *
+                              this->particles.volume(k) /
+                              this->particles.member_volume(k),
                             local.residual,
                             tangent);
       }

@@ -294,8 +294,11 @@ namespace pg
                                           detail.str()));
           }
         stabilisation.implicit_gradients.push_back(std::move(h));
+        // of the particle's volume in the mirrored body, times the
+        // family's share of the model (FamilyElements::family_share())
         stabilisation.second_moments.push_back(
-          particle_second_moment<dim>(particles.volume(k)));
+          particles.volume(k) / particles.member_volume(k) *
+          particle_second_moment<dim>(particles.member_volume(k)));
       }
     return stabilisation;
   }
