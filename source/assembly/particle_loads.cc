@@ -110,13 +110,6 @@ namespace pg
           return loads.is_neumann(area.first);
         }))
       {
-        AssertThrow(particles.n_mirror_planes() == 0,
-                    ExcBadParameter(
-                      "Boundary conditions/Particle traction area",
-                      "exact stress",
-                      "this verification option is not built for mirrored "
-                      "families; set 'Symmetry treatment = constraint' in "
-                      "the same subsection."));
         // the surface load plus the body force: the whole internal force
         // of the exact stress
         const Tensor<1, dim> force = exact_stress_force(k);

@@ -121,25 +121,35 @@ namespace pg
   template <int dim>
   Tensor<1, dim>
   particle_stress_force(
+    const ParticleSet<dim>                                  &particles,
     const FamilySet<dim>                                    &families,
     const FamilyElements<dim>                               &elements,
     const unsigned int                                       k,
     const std::function<Tensor<2, dim>(const Point<dim> &)> &stress)
   {
+    // the real families that hold k or an image of k: the originals of
+    // the members of family k (pairwise, mirrored completion)
+    std::vector<unsigned int> containing;
+    for (const unsigned int e : families.members(k))
+      containing.push_back(particles.original(e));
+    std::sort(containing.begin(), containing.end());
+    containing.erase(std::unique(containing.begin(), containing.end()),
+                     containing.end());
     Tensor<1, dim>       force;
     QuadratureTable<dim> table;
-    for (const unsigned int e : families.members(k))
+    for (const unsigned int e : containing)
       {
         elements.build(e, table);
-        const auto members = families.members(e);
-        const auto found   = std::find(members.begin(), members.end(), k);
-        Assert(found != members.end(), ExcInternalError());
+        const auto                  members = families.members(e);
         std::vector<Tensor<1, dim>> local(members.size());
         add_stress_residual<dim>(
           table,
           [&](const unsigned int q) { return stress(table.points[q]); },
           local);
-        force += local[found - members.begin()];
+        for (unsigned int m = 0; m < members.size(); ++m)
+          if (particles.original(members[m]) == k)
+            for (unsigned int c = 0; c < dim; ++c)
+              force[c] += particles.mirror_sign(members[m], c) * local[m][c];
       }
     return force;
   }
@@ -172,12 +182,14 @@ namespace pg
                            const std::vector<Tensor<1, 3>> &);
   template Tensor<1, 2>
   particle_stress_force<2>(
+    const ParticleSet<2> &,
     const FamilySet<2> &,
     const FamilyElements<2> &,
     const unsigned int,
     const std::function<Tensor<2, 2>(const Point<2> &)> &);
   template Tensor<1, 3>
   particle_stress_force<3>(
+    const ParticleSet<3> &,
     const FamilySet<3> &,
     const FamilyElements<3> &,
     const unsigned int,

@@ -58,21 +58,27 @@ namespace pg
             neighbours[k].push_back(j);
       }
 
-    // Pairwise completion: j in H^k => k in H^j. For an image j of
-    // particle o across the planes M: the image of k across M joins H^o
-    // (the mirror of j in H^k), so that the mirrored families are those
-    // of the full body.
-    // (an image of k itself completes H^k with itself: the lists grow
-    // only after the loop)
+    // Pairwise completion: j in H^k => k in H^j. With mirror images: j is
+    // the image across the planes M of particle o (M empty for a real
+    // one); the full body holds o in the family of every reflection of k
+    // that maps j to o, across M and any of the planes through o, so those
+    // images of k join H^o, and the families are the full body's (with
+    // distinct horizons too).
     std::vector<std::pair<unsigned int, unsigned int>> completion;
     for (unsigned int k = 0; k < n; ++k)
       for (const unsigned int j : neighbours[k])
-        if (j < n)
-          completion.emplace_back(j, k);
-        else
-          completion.emplace_back(particles.original(j),
-                                  particles.mirror_image(
-                                    k, particles.mirror_mask(j)));
+        {
+          const unsigned int o      = particles.original(j);
+          const unsigned int M      = particles.mirror_mask(j);
+          const unsigned int planes = particles.on_mirror_planes(o);
+          // every subset S of the planes through o (S = 0 first)
+          for (unsigned int S = 0;; S = (S - planes) & planes)
+            {
+              completion.emplace_back(o, particles.mirror_image(k, M ^ S));
+              if (((S - planes) & planes) == 0)
+                break;
+            }
+        }
     for (const auto &[master, member] : completion)
       neighbours[master].push_back(member);
     offsets.assign(1, 0);

@@ -53,6 +53,7 @@ namespace pg
                              X));
                        };
                        return particle_stress_force<dim>(
+                         this->discretization.particles,
                          this->discretization.families,
                          *this->discretization.family_elements,
                          k,

@@ -176,17 +176,17 @@ main(int argc, char **argv)
     }
 
   // particle_stress_force of P = 1 is d^k
-  const std::vector<Tensor<1, dim>> d =
-    unit_stress_residual(fixture.families,
-                         owned,
-                         tables,
-                         particles,
-                         MPI_COMM_WORLD);
-  double worst = 0;
+  const std::vector<Tensor<1, dim>> d = unit_stress_residual(fixture.families,
+                                                             owned,
+                                                             tables,
+                                                             particles,
+                                                             MPI_COMM_WORLD);
+  double                            worst = 0;
   for (unsigned int k = 0; k < particles.n_particles(); ++k)
     worst =
       std::max(worst,
-               (particle_stress_force<dim>(fixture.families,
+               (particle_stress_force<dim>(fixture.particles,
+                                           fixture.families,
                                            elements,
                                            k,
                                            [](const Point<dim> &) {

@@ -67,10 +67,15 @@ namespace pg
    * the tables of @p elements (built here). Families are pairwise, so the
    * families containing k are those of the members of family k. With the
    * exact stress it is the 'Particle traction area = exact stress' load.
+   * With mirror images (ParticleSet::add_mirror_images()) the families
+   * containing k or one of its images, each image's part reflected: the
+   * row of k as the assembly folds it (P at an image point is the
+   * function's value there).
    */
   template <int dim>
   Tensor<1, dim>
   particle_stress_force(
+    const ParticleSet<dim>                                  &particles,
     const FamilySet<dim>                                    &families,
     const FamilyElements<dim>                               &elements,
     const unsigned int                                       k,
