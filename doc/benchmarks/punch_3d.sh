@@ -13,19 +13,47 @@
 # default set below. Each run is skipped when its line is already in
 # results.txt (delete the file to redo everything).
 # PLOT_ONLY=1: only redraw the figure. PYTHON=<python with matplotlib>.
-# Writes doc/benchmarks/punch_3d/results.txt and doc/figures/punch_3d.png.
+# TREATMENT=mirror (default: mirrored families at the symmetry planes, the
+# full block's solution) or constraint (the dissertation's u_n = 0 with
+# families cut off there); MODEL=quarter (default) or full (the whole
+# block -0.1 <= x, y <= 0.1 with the centred patch, 4x the particles).
+# Q=<load> and STEPS=<load steps> change q = 9 N/m^2 and the 10 steps
+# (Q=0.009 STEPS=1: the linear regime).
+# Writes doc/benchmarks/punch_3d/results_<TREATMENT>[_full][_q<Q>].txt and
+# doc/figures/punch_3d.png (of TREATMENT=mirror, MODEL=quarter, q = 9).
 # Usage (from the repository root, with a Release build; about 40 minutes
 # on 2 cores):
 #   sh doc/benchmarks/punch_3d.sh build-release/applications/pg_solve/pg_solve
 set -e
 PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
 OUT=${OUT:-doc/benchmarks/punch_3d}
-FIG=${FIG:-doc/figures/punch_3d.png}
 PYTHON=${PYTHON:-/usr/bin/python3}
 ROOT=$(pwd)
 WORK=$(mktemp -d)
+TREATMENT=${TREATMENT:-mirror}
+MODEL=${MODEL:-quarter}
+Q=${Q:-9}
+STEPS=${STEPS:-10}
+SUFFIX="_$TREATMENT"
+[ "$MODEL" = quarter ] || SUFFIX="${SUFFIX}_$MODEL"
+[ "$Q" = 9 ] || SUFFIX="${SUFFIX}_q$Q"
+RESULTS="$OUT/results$SUFFIX.txt"
+if [ "$SUFFIX" = _mirror ]; then FIG=${FIG:-doc/figures/punch_3d.png}; else FIG=${FIG:-doc/figures/punch_3d$SUFFIX.png}; fi
 mkdir -p "$OUT" "$(dirname "$FIG")"
-RESULTS="$OUT/results.txt"
+if [ "$MODEL" = full ]; then
+  # the whole block: patch -0.05 <= x, y <= 0.05, its vertices held in x
+  # and y, n x n x n/2 cells over the full width (h of the quarter's
+  # n/2)
+  GEOMETRY="  set Lower corner = -0.1, -0.1, 0"
+  BOXES="  set Dirichlet boxes = -0.05, -0.05, 0.05 : 0.05, 0.05, 0.05 : xy"
+  SYMMETRY="  set Symmetry ="
+  PATCH="if(abs(x) < a - e, 1, if(abs(x) < a + e, 0.5, 0)) * if(abs(y) < a - e, 1, if(abs(y) < a + e, 0.5, 0))"
+else
+  GEOMETRY=""
+  BOXES=""
+  SYMMETRY="  set Symmetry = 0, 2"
+  PATCH="if(x < a - e, 1, if(x < a + e, 0.5, 0)) * if(y < a - e, 1, if(y < a + e, 0.5, 0))"
+fi
 
 # nu = 0.4: the legend of Fig. 7.20 (left); nu = 0.49999: the formulations
 # of the text. PPG tangents are not symmetric: GMRES. Near incompressibility ML's CG does not converge in
@@ -56,6 +84,19 @@ echo "$RUNS" | tr ';' '\n' | while IFS='|' read -r nu f solver ns; do
 include $ROOT/prm/punch_3d.prm
 subsection Geometry
   set Subdivisions = $n, $n, $((n / 2))
+$GEOMETRY
+end
+subsection Boundary conditions
+$SYMMETRY
+  set Symmetry treatment = $TREATMENT
+$BOXES
+  subsection Traction
+    set Function constants  = q = $Q, a = 0.05, e = 1e-9
+    set Function expression = 0; 0; -q * t * $PATCH
+  end
+end
+subsection Loading
+  set Load steps = $STEPS
 end
 subsection Discretization
   set Formulation = $f

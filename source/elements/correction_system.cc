@@ -238,8 +238,13 @@ namespace pg
       if (particles->on_interface(k) &&
           particles->boundary_area_vectors(k).empty())
         surface.push_back(k);
+    // (the mirror planes are no surface: whether the body has a free
+    // surface is decided before their rows are restricted)
+    bool free_surface = false;
+    for (unsigned int k = 0; k < n; ++k)
+      free_surface = free_surface || (kind[k] != Row::interior);
     restrict_to_mirror_planes();
-    fix_null_space(surface);
+    fix_null_space(surface, free_surface);
   }
 
 
@@ -255,19 +260,28 @@ namespace pg
     // the face's tangent plane, the edge), E' = E orthogonal to the
     // normals stays: dim directions interior, dim - 1 a face, 1 an edge,
     // none fixed. Option p keeps the Gauss identities only in part then,
-    // and d + 1 fixed particles would over-determine the system.
+    // and d + 1 fixed particles would over-determine the system
+    // (fix_null_space() fixes single components then: U1SUnl's prescribed
+    // targets, FE coupling without a free surface).
     if (particles->n_mirror_planes() == 0)
       return;
+    // Option p keeps a null space that the factors fixed at d + 1
+    // particles determine, and its part changes PBG's trial functions: a
+    // mirrored model cannot fix it as the full body does (2-D quarter with
+    // VCPBG V5p Unl: 10 % off the full body, half 1.3 %). U1SUnl's second
+    // system (prescribed targets, option p) fixes it at components instead
+    // (fix_mirrored_null_space()) and equals the full body.
     AssertThrow(formulation.vc_boundary != FormulationCode::VCBoundary::p ||
                   !prescribed_targets.empty(),
                 ExcBadParameter("Boundary conditions/Symmetry treatment",
                                 "mirror",
                                 "the VC boundary option p of '" +
                                   formulation.text +
-                                  "' (subsection 'Discretization') is not "
-                                  "built for mirrored families. Use option "
-                                  "sn or s, or 'Symmetry treatment = "
-                                  "constraint'."));
+                                  "' (subsection 'Discretization') leaves "
+                                  "the VC factors a null-space part that a "
+                                  "mirrored model cannot fix as the full "
+                                  "body does. Use option sn or s, or "
+                                  "'Symmetry treatment = constraint'."));
     for (unsigned int k = 0; k < particles->n_particles(); ++k)
       {
         const unsigned int planes = particles->on_mirror_planes(k);
@@ -291,9 +305,9 @@ namespace pg
             P_planes[particles->mirror_plane_axis(p)]
                     [particles->mirror_plane_axis(p)] = 0.;
         // E' = the eigenvectors of P_planes P_E P_planes with eigenvalue 1
-        const auto eigen = eigenvectors(symmetrize(
-          Tensor<2, dim>(P_planes) * Tensor<2, dim>(P_E) *
-          Tensor<2, dim>(P_planes)));
+        const auto eigen = eigenvectors(
+          symmetrize(Tensor<2, dim>(P_planes) * Tensor<2, dim>(P_E) *
+                     Tensor<2, dim>(P_planes)));
         std::vector<Tensor<1, dim>> kept;
         for (const auto &[value, vector] : eigen)
           if (value > 1. - 1e-8)
@@ -323,7 +337,8 @@ namespace pg
   template <int dim>
   void
   CorrectionSystem<dim>::fix_null_space(
-    const std::vector<unsigned int> &surface)
+    const std::vector<unsigned int> &surface,
+    const bool                       free_surface)
   {
     // Without a free surface (option p, or particles embedded in finite
     // elements) every row has a full target and the system has the nullity
@@ -331,10 +346,7 @@ namespace pg
     // particles spread over the boundary removes it (one particle for
     // PPG2, see below); the dropped equations then hold automatically,
     // since the targets obey the same identities.
-    const unsigned int n            = particles->n_particles();
-    bool               free_surface = false;
-    for (unsigned int k = 0; k < n; ++k)
-      free_surface = free_surface || (kind[k] != Row::interior);
+    const unsigned int n = particles->n_particles();
     if (formulation.vc_boundary != FormulationCode::VCBoundary::p &&
         free_surface)
       {
@@ -378,6 +390,11 @@ namespace pg
       if (elements->family_correction_function(k) ==
           FormulationCode::CorrectionFunction::v1)
         first_order_identity = false;
+    if (particles->n_mirror_planes() > 0)
+      {
+        fix_mirrored_null_space(surface, first_order_identity);
+        return;
+      }
     const unsigned int n_fixed = (first_order_identity ? dim + 1 : 1);
     while (chosen.size() < n_fixed)
       {
@@ -389,6 +406,90 @@ namespace pg
       }
     for (const unsigned int k : chosen)
       kind[k] = Row::fixed;
+  }
+
+
+
+  template <int dim>
+  void
+  CorrectionSystem<dim>::fix_mirrored_null_space(
+    const std::vector<unsigned int> &surface,
+    const bool                       first_order_identity)
+  {
+    // The null space of the full body, alpha^k = A X^k + b (A = 0 with
+    // only the zeroth-order identity), keeps the fields that are their
+    // own mirror images: b_i = 0 and A_ij = 0 for i != j where i or j is
+    // the axis of a plane. Each is removed by fixing one component of
+    // one particle off the planes (an equation row becomes e_c . alpha^k
+    // = 0), chosen by QR with column pivoting over the components of the
+    // candidates, so that the fixed values determine the null-space part.
+    std::vector<bool> normal_axis(dim, false);
+    Point<dim>        on_planes; // a point on every plane
+    for (unsigned int p = 0; p < particles->n_mirror_planes(); ++p)
+      {
+        normal_axis[particles->mirror_plane_axis(p)] = true;
+        on_planes[particles->mirror_plane_axis(p)] =
+          particles->mirror_plane_offset(p);
+      }
+    // null vectors: (i, j) for A_ij (j = dim: b_i)
+    std::vector<std::pair<unsigned int, unsigned int>> null_vectors;
+    for (unsigned int i = 0; i < dim; ++i)
+      {
+        if (!normal_axis[i])
+          null_vectors.emplace_back(i, dim);
+        if (first_order_identity)
+          for (unsigned int j = 0; j < dim; ++j)
+            if (i == j || (!normal_axis[i] && !normal_axis[j]))
+              null_vectors.emplace_back(i, j);
+      }
+    // candidates: the components of the surface particles off the planes
+    // with a full set of equations
+    std::vector<std::pair<unsigned int, unsigned int>> entries;
+    std::vector<std::vector<double>>                   columns;
+    for (const unsigned int k : surface)
+      if (particles->on_mirror_planes(k) == 0 && kind[k] == Row::interior)
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const Tensor<1, dim> X = particles->position(k) - on_planes;
+            std::vector<double>  column;
+            for (const auto &[i, j] : null_vectors)
+              column.push_back(i != c ? 0. : (j == dim ? 1. : X[j]));
+            entries.emplace_back(k, c);
+            columns.push_back(column);
+          }
+    AssertThrow(entries.size() >= null_vectors.size(),
+                ExcMessage("The VC correction needs more particles on the "
+                           "boundary of the meshfree region, off the "
+                           "symmetry planes."));
+    for (unsigned int picked = 0; picked < null_vectors.size(); ++picked)
+      {
+        unsigned int best = 0;
+        double       norm = -1;
+        for (unsigned int e = 0; e < columns.size(); ++e)
+          {
+            double s = 0;
+            for (const double v : columns[e])
+              s += v * v;
+            if (s > norm)
+              norm = s, best = e;
+          }
+        AssertThrow(norm > 1e-20, ExcInternalError());
+        std::vector<double> q = columns[best];
+        for (double &v : q)
+          v /= std::sqrt(norm);
+        for (auto &column : columns)
+          {
+            double dot = 0;
+            for (unsigned int r = 0; r < q.size(); ++r)
+              dot += q[r] * column[r];
+            for (unsigned int r = 0; r < q.size(); ++r)
+              column[r] -= dot * q[r];
+          }
+        const auto [k, c] = entries[best];
+        kind[k]           = Row::tangential;
+        R[k][c]           = Tensor<1, dim>();
+        constraint[k][c]  = Point<dim>::unit_vector(c);
+      }
   }
 
 

@@ -20,9 +20,8 @@ namespace pg
     {
       return ExcBadParameter("Boundary conditions/Symmetry treatment",
                              "mirror",
-                             why +
-                               " Set 'Symmetry treatment = constraint' "
-                               "(n . u = 0 alone) for such planes.");
+                             why + " Set 'Symmetry treatment = constraint' "
+                                   "(n . u = 0 alone) for such planes.");
     }
   } // namespace
 
@@ -52,9 +51,10 @@ namespace pg
                 mirror_error("More than dim symmetry planes."));
     mirror_planes.clear();
     std::vector<unsigned int> vertex_planes(n_vertices, 0);
-    const auto is_mirror_face = [&](const auto &face) {
+    const auto                is_mirror_face = [&](const auto &face) {
       return face->at_boundary() &&
-             std::find(mirror_ids.begin(), mirror_ids.end(),
+             std::find(mirror_ids.begin(),
+                       mirror_ids.end(),
                        face->boundary_id()) != mirror_ids.end();
     };
     for (const types::boundary_id id : mirror_ids)
@@ -86,8 +86,7 @@ namespace pg
                 if (plane.axis == numbers::invalid_unsigned_int)
                   plane = {axis, face->vertex(0)[axis], id};
                 AssertThrow(plane.axis == axis &&
-                              std::abs(face->vertex(0)[axis] -
-                                       plane.offset) <=
+                              std::abs(face->vertex(0)[axis] - plane.offset) <=
                                 1e-10 * face->diameter(),
                             mirror_error("The faces of the symmetry "
                                          "boundary " +
@@ -103,8 +102,8 @@ namespace pg
         for (const MirrorPlane &other : mirror_planes)
           AssertThrow(other.axis != plane.axis,
                       mirror_error("The symmetry boundaries " +
-                                   std::to_string(other.boundary_id) +
-                                   " and " + std::to_string(id) +
+                                   std::to_string(other.boundary_id) + " and " +
+                                   std::to_string(id) +
                                    " are parallel, which would need "
                                    "infinitely many images."));
         mirror_planes.push_back(plane);
@@ -193,8 +192,7 @@ namespace pg
               // with mirror planes, the edge and its images at particles
               // on a plane: 2^m copies, m the planes that hold the
               // particle but not the edge
-              const unsigned int common = vertex_planes[line->vertex_index(
-                                            0)] &
+              const unsigned int common = vertex_planes[line->vertex_index(0)] &
                                           vertex_planes[line->vertex_index(1)];
               for (unsigned int e = 0; e < 2; ++e)
                 {
@@ -387,6 +385,16 @@ namespace pg
   {
     AssertIndexRange(p, mirror_planes.size());
     return mirror_planes[p].axis;
+  }
+
+
+
+  template <int dim>
+  double
+  ParticleSet<dim>::mirror_plane_offset(const unsigned int p) const
+  {
+    AssertIndexRange(p, mirror_planes.size());
+    return mirror_planes[p].offset;
   }
 
 

@@ -177,7 +177,17 @@ namespace pg
      * the system has no free surface or the option is p.
      */
     void
-    fix_null_space(const std::vector<unsigned int> &surface);
+    fix_null_space(const std::vector<unsigned int> &surface,
+                   const bool                       free_surface);
+
+    /**
+     * fix_null_space() with mirror planes: of the null space of the full
+     * body, the fields that are their own mirror image remain, each fixed
+     * by one component of one particle of @p surface.
+     */
+    void
+    fix_mirrored_null_space(const std::vector<unsigned int> &surface,
+                            const bool first_order_identity);
 
     /** The pattern of the correction couplings and the identity rows. */
     void

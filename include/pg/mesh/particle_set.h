@@ -74,13 +74,18 @@ namespace pg
     unsigned int
     n_particles_and_images() const;
 
-    /** The number of mirror planes (0 without 'Symmetry treatment = mirror'). */
+    /** The number of mirror planes (0 without 'Symmetry treatment = mirror').
+     */
     unsigned int
     n_mirror_planes() const;
 
     /** The coordinate axis to which mirror plane @p p is normal. */
     unsigned int
     mirror_plane_axis(const unsigned int p) const;
+
+    /** The coordinate of mirror plane @p p along its axis (length). */
+    double
+    mirror_plane_offset(const unsigned int p) const;
 
     /** The particle whose image @p j is (j itself for a real particle). */
     unsigned int
