@@ -378,12 +378,14 @@ namespace pg
     // T(X^k) c_b is wrong by up to the whole c_b (the error of the
     // resultant falls only like h) and no constant stress can be in
     // equilibrium with the load anyway. It gets its test-function area
-    // times the average traction over its faces, (c_b / |a^k|) int N_k T,
-    // and then the difference between the exact resultant and the sum of
-    // all loads of the id, distributed over the partly loaded particles in
-    // proportion to int N_k |T|: the resultant is then the face integral to
-    // round-off, and the correction vanishes where nothing is partly
-    // loaded.
+    // times the average traction over its faces, (c_b / A) int N_k T with
+    // A the particle's geometric area in that plane (|a^k| of the id, or of
+    // all ids in the plane; on the FE/meshfree interface c_b = A, the
+    // FE-consistent int N_k T), and then the difference between the exact
+    // resultant and the sum of all loads of the id, distributed over the partly
+    // loaded particles in proportion to int N_k |T|: the resultant is then the
+    // face integral to round-off, and the correction vanishes where nothing is
+    // partly loaded.
     std::map<types::boundary_id, Tensor<1, dim>> sum;
     std::map<types::boundary_id, double>         weight;
     for (unsigned int k = 0; k < particles.n_particles(); ++k)
@@ -403,9 +405,11 @@ namespace pg
                 shared = true;
               }
           part.edge = (part.vanishes || shared) && plane_area > 0;
+          // eq. 4.32 alone, for the report
+          Tensor<1, dim> plain;
           if (from_test_functions && own != areas.end())
             {
-              const Tensor<1, dim> plain = traction_load(k, id, own->second);
+              plain = traction_load(k, id, own->second);
               resultants[id].point_force += plain;
             }
           if (!from_test_functions || own == areas.end())
@@ -421,7 +425,7 @@ namespace pg
               weight[id] += part.magnitude;
             }
           else
-            part.load = traction_load(k, id, own->second);
+            part.load = plain;
           sum[id] += part.load;
         }
     if (from_test_functions)
