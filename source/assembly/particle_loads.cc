@@ -381,13 +381,17 @@ namespace pg
     // times the average traction over its faces, (c_b / A) int N_k T with
     // A the particle's geometric area in that plane (|a^k| of the id, or of
     // all ids in the plane; on the FE/meshfree interface c_b = A, the
-    // FE-consistent int N_k T), and then the difference between the exact
-    // resultant and the sum of all loads of the id, distributed over the partly
-    // loaded particles in proportion to int N_k |T|: the resultant is then the
-    // face integral to round-off, and the correction vanishes where nothing is
+    // FE-consistent int N_k T). Then every loaded particle of an id with
+    // partly loaded ones gets the difference between the exact resultant
+    // and the sum of all loads of the id in proportion to int N_k |T| (the
+    // difference is mostly the sum of (c_b - |a^k|) T over the id: it comes
+    // from the whole loaded area, not from its edge; without VC c_b misses
+    // a share of the area everywhere). The resultant is then the face
+    // integral to round-off, and nothing changes where no particle is
     // partly loaded.
     std::map<types::boundary_id, Tensor<1, dim>> sum;
     std::map<types::boundary_id, double>         weight;
+    std::map<types::boundary_id, unsigned int>   n_partial;
     for (unsigned int k = 0; k < particles.n_particles(); ++k)
       for (auto &[id, part] : face_parts[k])
         {
@@ -422,18 +426,22 @@ namespace pg
                   plane_area :
                   area_weights[k].at(id);
               part.load = (c / plane_area) * part.integral;
-              weight[id] += part.magnitude;
+              n_partial[id] += part.loaded;
             }
           else
             part.load = plain;
           sum[id] += part.load;
+          weight[id] += part.magnitude;
         }
     if (from_test_functions)
       for (unsigned int k = 0; k < particles.n_particles(); ++k)
         for (auto &[id, part] : face_parts[k])
-          if (part.partial && weight[id] > 0)
-            part.load += (part.magnitude / weight[id]) *
-                         (resultants[id].exact_force - sum[id]);
+          if (n_partial[id] > 0 && weight[id] > 0 && part.magnitude > 0)
+            {
+              part.load += (part.magnitude / weight[id]) *
+                           (resultants[id].exact_force - sum[id]);
+              part.partial = true;
+            }
 
     for (unsigned int k = 0; k < particles.n_particles(); ++k)
       for (const auto &[id, part] : face_parts[k])

@@ -209,8 +209,9 @@ namespace pg
       bool vanishes = false, loaded = false;
       /**
        * At the edge of the loaded region (T = 0 on some of the faces, or
-       * another id in the same plane); with 'test functions' then partly
-       * loaded: the load is `load`, not eq. 4.32.
+       * another id in the same plane). With 'test functions' `partial`
+       * says that the load is `load`, not eq. 4.32 (at the edge, and at
+       * every loaded particle of an id that has edge particles).
        */
       bool           edge = false, partial = false;
       Tensor<1, dim> load;
