@@ -145,10 +145,10 @@ namespace pg
                                     const types::boundary_id id,
                                     const Tensor<1, dim>    &area) const
   {
-    if (!face_parts.empty())
+    if (const auto parts = face_parts.find(k); parts != face_parts.end())
       {
-        const auto part = face_parts[k].find(id);
-        if (part != face_parts[k].end() && part->second.partial)
+        const auto part = parts->second.find(id);
+        if (part != parts->second.end() && part->second.partial)
           return part->second.load;
       }
     // eq. 4.32: the traction at the particle times its area
@@ -286,7 +286,7 @@ namespace pg
     if (t == partial_time || !have_neumann_cells)
       return;
     partial_time = t;
-    face_parts.assign(particles.n_particles(), {});
+    face_parts.clear();
     resultants.clear();
     for (const types::boundary_id id : loads.neumann_ids())
       {
@@ -392,8 +392,8 @@ namespace pg
     std::map<types::boundary_id, Tensor<1, dim>> sum;
     std::map<types::boundary_id, double>         weight;
     std::map<types::boundary_id, unsigned int>   n_partial;
-    for (unsigned int k = 0; k < particles.n_particles(); ++k)
-      for (auto &[id, part] : face_parts[k])
+    for (auto &[k, parts] : face_parts)
+      for (auto &[id, part] : parts)
         {
           const auto          &areas = particles.boundary_area_vectors(k);
           const auto           own   = areas.find(id);
@@ -434,8 +434,8 @@ namespace pg
           weight[id] += part.magnitude;
         }
     if (from_test_functions)
-      for (unsigned int k = 0; k < particles.n_particles(); ++k)
-        for (auto &[id, part] : face_parts[k])
+      for (auto &[k, parts] : face_parts)
+        for (auto &[id, part] : parts)
           if (n_partial[id] > 0 && weight[id] > 0 && part.magnitude > 0)
             {
               part.load += (part.magnitude / weight[id]) *
@@ -443,8 +443,8 @@ namespace pg
               part.partial = true;
             }
 
-    for (unsigned int k = 0; k < particles.n_particles(); ++k)
-      for (const auto &[id, part] : face_parts[k])
+    for (const auto &[k, parts] : face_parts)
+      for (const auto &[id, part] : parts)
         {
           Resultant &r = resultants[id];
           r.force += part.load;

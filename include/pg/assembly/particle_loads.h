@@ -216,9 +216,11 @@ namespace pg
       bool           edge = false, partial = false;
       Tensor<1, dim> load;
     };
-    mutable double                                              partial_time;
-    mutable std::vector<std::map<types::boundary_id, FacePart>> face_parts;
-    mutable std::map<types::boundary_id, Resultant>             resultants;
+    mutable double partial_time;
+    /** Only the particles on Neumann faces (particle -> id -> part). */
+    mutable std::map<unsigned int, std::map<types::boundary_id, FacePart>>
+                                                    face_parts;
+    mutable std::map<types::boundary_id, Resultant> resultants;
   };
 } // namespace pg
 
