@@ -170,7 +170,7 @@ namespace pg
      * The face integrals of the traction at the current load factor (once
      * per load factor): per Neumann id the exact force and moment, per
      * particle k and id b the integral of N_k T over k's faces of b, and
-     * the loads of the partly loaded particles (loads).
+     * the loads of the partly loaded particles (FacePart::load).
      */
     void
     update_partial_loads() const;
@@ -194,7 +194,10 @@ namespace pg
     std::vector<Tensor<1, dim>>                       unit_stress_residual;
     std::vector<std::map<types::boundary_id, double>> area_weights;
 
-    /** set_neumann_cells(); particle of each vertex (or -1). */
+    /**
+     * set_neumann_cells(); the particle of each vertex (invalid_unsigned_int
+     * for the vertices of finite elements only).
+     */
     std::vector<CellIterator> neumann_cells;
     std::vector<unsigned int> particle_of_vertex;
     bool                      have_neumann_cells = false;
