@@ -245,8 +245,33 @@ namespace pg
     discretization.time_setup += timer.wall_time() - system.time_vc;
     compute_assembly_cost();
 
+    // The resultant and moment of every Neumann id on the particles at the
+    // full load (load factor 1), beside the exact ones.
+    const auto  &particle_loads = system.particle_loads;
+    const double load_factor    = system.loads.load_factor();
+    prm.set_load_factor(1.);
+    summary.neumann_resultants.clear();
+    for (const auto &r : particle_loads.neumann_resultants())
+      {
+        RunSummary::NeumannResultant n;
+        n.id              = r.id;
+        n.area            = r.area;
+        n.moment          = r.moment;
+        n.exact_moment    = r.exact_moment;
+        n.n_partly_loaded = r.n_partly_loaded;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            n.centre.push_back(r.centre[c]);
+            n.force.push_back(r.force[c]);
+            n.exact_force.push_back(r.exact_force[c]);
+            if (particle_loads.traction_from_test_functions())
+              n.point_force.push_back(r.point_force[c]);
+          }
+        summary.neumann_resultants.push_back(n);
+      }
+    prm.set_load_factor(load_factor);
+
     // The echo of what was understood (no wall times: tests compare it).
-    const auto &particle_loads = system.particle_loads;
     Postprocess::print_setup_report(
       pcout,
       prm,

@@ -67,7 +67,25 @@ namespace pg
      * vertices in the box (a vertex in two boxes counts for both).
      */
     std::vector<std::vector<double>> box_reactions;
-    bool                             have_errors = false;
+    /**
+     * The traction of one Neumann id at load factor 1 on the particles
+     * ('test functions' or 'geometry'; ParticleLoads::Resultant): its
+     * resultant force and moment about the centre (the area centroid of
+     * the id's meshfree faces; moment: z in 2-D, three components in 3-D)
+     * beside the exact ones, the face integrals of the traction.
+     */
+    struct NeumannResultant
+    {
+      types::boundary_id  id   = 0;
+      double              area = 0;
+      std::vector<double> centre, force, exact_force, moment, exact_moment;
+      /** 'test functions': the resultant of eq. 4.32 alone (else empty). */
+      std::vector<double> point_force;
+      /** Particles at the edge of the loaded region (load corrected). */
+      unsigned int n_partly_loaded = 0;
+    };
+    std::vector<NeumannResultant> neumann_resultants;
+    bool                          have_errors = false;
     double L2 = 0, H1 = 0, L2_relative = 0, H1_relative = 0;
     /**
      * Energy norm of the error, sqrt(int grad e : A(1) : grad e) with the

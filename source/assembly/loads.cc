@@ -36,6 +36,29 @@ namespace pg
 
 
   template <int dim>
+  std::vector<types::boundary_id>
+  Loads<dim>::neumann_ids() const
+  {
+    const auto                     &bc = parameters.boundary_conditions;
+    std::vector<types::boundary_id> ids(bc.neumann.begin(), bc.neumann.end());
+    ids.insert(ids.end(), bc.neumann_stress.begin(), bc.neumann_stress.end());
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return ids;
+  }
+
+
+
+  template <int dim>
+  double
+  Loads<dim>::load_factor() const
+  {
+    return parameters.traction.get_time();
+  }
+
+
+
+  template <int dim>
   Tensor<1, dim>
   Loads<dim>::prescribed_traction(const types::boundary_id id,
                                   const Point<dim>        &point,

@@ -5,6 +5,8 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 namespace pg
@@ -31,6 +33,7 @@ namespace pg
     , from_exact_stress(parameters.boundary_conditions.particle_traction_area ==
                         "exact stress")
     , fe_scalar(1)
+    , partial_time(std::numeric_limits<double>::quiet_NaN())
   {}
 
 
@@ -66,6 +69,7 @@ namespace pg
                                                     particles,
                                                     comm);
     area_weights = pg::boundary_area_weights(particles, unit_stress_residual);
+    partial_time = std::numeric_limits<double>::quiet_NaN();
   }
 
 
@@ -127,18 +131,36 @@ namespace pg
       for (const auto &[id, area] : areas)
         if (loads.is_neumann(id))
           {
-            const Tensor<1, dim> t =
-              loads.prescribed_traction(id,
-                                        particles.position(k),
-                                        area / area.norm());
-            // On the FE/meshfree interface the VC targets d^k are the
-            // geometric area vectors (interface plus surface part), so the
-            // consistent load there is the geometric one.
-            const double a =
-              particles.on_interface(k) ? area.norm() : area_weights[k].at(id);
+            const Tensor<1, dim> f = traction_load(k, id, area);
             for (unsigned int c = 0; c < dim; ++c)
-              load(c) += a * t[c];
+              load(c) += f[c];
           }
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ParticleLoads<dim>::traction_load(const unsigned int       k,
+                                    const types::boundary_id id,
+                                    const Tensor<1, dim>    &area) const
+  {
+    if (const auto parts = face_parts.find(k); parts != face_parts.end())
+      {
+        const auto part = parts->second.find(id);
+        if (part != parts->second.end() && part->second.partial)
+          return part->second.load;
+      }
+    // eq. 4.32: the traction at the particle times its area
+    const Tensor<1, dim> t =
+      loads.prescribed_traction(id, particles.position(k), area / area.norm());
+    // On the FE/meshfree interface the VC targets d^k are the geometric area
+    // vectors (interface plus surface part), so the consistent load there is
+    // the geometric one.
+    const double a = particles.on_interface(k) || area_weights.empty() ?
+                       area.norm() :
+                       area_weights[k].at(id);
+    return a * t;
   }
 
 
@@ -150,6 +172,8 @@ namespace pg
     // no body force and no traction: every particle load is zero
     if (!loads.any())
       return;
+    if (from_test_functions)
+      update_partial_loads();
     Vector<double>                       load(dim);
     std::vector<types::global_dof_index> dofs(dim);
     for (const unsigned int k : owned_families)
@@ -210,6 +234,240 @@ namespace pg
             "Check the 'Traction' function."));
         assembler.distribute(local_system);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleLoads<dim>::set_neumann_cells(const std::vector<CellIterator> &cells)
+  {
+    neumann_cells      = cells;
+    have_neumann_cells = true;
+    particle_of_vertex.clear();
+    if (!cells.empty())
+      particle_of_vertex.assign(cells.front()->get_triangulation().n_vertices(),
+                                numbers::invalid_unsigned_int);
+    for (unsigned int k = 0; k < particles.n_particles(); ++k)
+      if (particles.vertex(k) < particle_of_vertex.size())
+        particle_of_vertex[particles.vertex(k)] = k;
+    partial_time = std::numeric_limits<double>::quiet_NaN();
+  }
+
+
+
+  namespace
+  {
+    /** r x f: its z component in 2-D, all three in 3-D. */
+    template <int dim>
+    void
+    add_moment(const Tensor<1, dim> &r,
+               const Tensor<1, dim> &f,
+               std::vector<double>  &moment)
+    {
+      if constexpr (dim == 2)
+        moment[0] += r[0] * f[1] - r[1] * f[0];
+      else
+        {
+          const Tensor<1, 3> m = cross_product_3d(r, f);
+          for (unsigned int c = 0; c < 3; ++c)
+            moment[c] += m[c];
+        }
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  ParticleLoads<dim>::update_partial_loads() const
+  {
+    const double t = loads.load_factor();
+    if (t == partial_time || !have_neumann_cells)
+      return;
+    partial_time = t;
+    face_parts.clear();
+    resultants.clear();
+    for (const types::boundary_id id : loads.neumann_ids())
+      {
+        Resultant &r   = resultants[id];
+        r.id           = id;
+        r.moment       = std::vector<double>(dim == 2 ? 1 : 3, 0.);
+        r.exact_moment = r.moment;
+      }
+
+    // The exact resultant: the face integral of T over the meshfree faces
+    // of each id, with the quadrature of the FE side (Loads::
+    // add_face_tractions()); and int N_k T dA over the faces of each
+    // particle, N_k the Q1 function of its vertex (the particle's share of
+    // the face, whose integral is its geometric area |a^k|).
+    FEFaceValues<dim> fe_face_values(fe_scalar,
+                                     QGauss<dim - 1>(2),
+                                     update_values | update_quadrature_points |
+                                       update_normal_vectors |
+                                       update_JxW_values);
+    // f(id, cell, vertices of the face) on every Neumann face, reinit'ed
+    const auto for_each_face = [&](const auto &f) {
+      std::vector<unsigned int> on_face;
+      for (const auto &cell : neumann_cells)
+        for (const unsigned int face : cell->face_indices())
+          if (cell->face(face)->at_boundary() &&
+              loads.is_neumann(cell->face(face)->boundary_id()))
+            {
+              fe_face_values.reinit(
+                typename Triangulation<dim>::active_cell_iterator(cell),
+                face);
+              on_face.clear();
+              for (const unsigned int i : cell->vertex_indices())
+                for (const unsigned int v : cell->face(face)->vertex_indices())
+                  if (cell->vertex_index(i) ==
+                      cell->face(face)->vertex_index(v))
+                    on_face.push_back(i);
+              f(cell->face(face)->boundary_id(), cell, on_face);
+            }
+    };
+    // the area and its centroid
+    for_each_face([&](const types::boundary_id id, const auto &, const auto &) {
+      Resultant &r = resultants[id];
+      for (const unsigned int q : fe_face_values.quadrature_point_indices())
+        {
+          r.area += fe_face_values.JxW(q);
+          for (unsigned int c = 0; c < dim; ++c)
+            r.centre[c] +=
+              fe_face_values.quadrature_point(q)[c] * fe_face_values.JxW(q);
+        }
+    });
+    for (auto &[id, r] : resultants)
+      if (r.area > 0)
+        r.centre /= r.area;
+    // the traction
+    for_each_face([&](const types::boundary_id         id,
+                      const auto                      &cell,
+                      const std::vector<unsigned int> &on_face) {
+      Resultant &r = resultants[id];
+      for (const unsigned int q : fe_face_values.quadrature_point_indices())
+        {
+          const Point<dim>    &x   = fe_face_values.quadrature_point(q);
+          const double         JxW = fe_face_values.JxW(q);
+          const Tensor<1, dim> T =
+            loads.prescribed_traction(id, x, fe_face_values.normal_vector(q));
+          r.exact_force += T * JxW;
+          add_moment<dim>(x - r.centre, T * JxW, r.exact_moment);
+          const double magnitude = T.norm();
+          for (const unsigned int i : on_face)
+            {
+              const unsigned int k = particle_of_vertex[cell->vertex_index(i)];
+              if (k == numbers::invalid_unsigned_int)
+                continue;
+              FacePart    &part = face_parts[k][id];
+              const double NJxW = fe_face_values.shape_value(i, q) * JxW;
+              part.integral += NJxW * T;
+              part.magnitude += NJxW * magnitude;
+              (magnitude == 0 ? part.vanishes : part.loaded) = true;
+            }
+        }
+    });
+
+    // The loads. A particle whose faces of id b all carry a non-zero
+    // traction, and whose area in that plane is all of id b, keeps eq.
+    // 4.32, T(X^k) c_b: that is what a constant stress needs to be in
+    // equilibrium with the internal forces (sigma . d^k at every particle),
+    // so the patch tests and every load uniform over a whole face are as
+    // before. A particle at the edge of the loaded region (T = 0 on some of
+    // its faces, or another id in the same plane) is partly loaded: there
+    // T(X^k) c_b is wrong by up to the whole c_b (the error of the
+    // resultant falls only like h) and no constant stress can be in
+    // equilibrium with the load anyway. It gets its test-function area
+    // times the average traction over its faces, (c_b / A) int N_k T with
+    // A the particle's geometric area in that plane (|a^k| of the id, or of
+    // all ids in the plane; on the FE/meshfree interface c_b = A, the
+    // FE-consistent int N_k T). Then every loaded particle of an id with
+    // partly loaded ones gets the difference between the exact resultant
+    // and the sum of all loads of the id in proportion to int N_k |T| (the
+    // difference is mostly the sum of (c_b - |a^k|) T over the id: it comes
+    // from the whole loaded area, not from its edge; without VC c_b misses
+    // a share of the area everywhere). The resultant is then the face
+    // integral to round-off, and nothing changes where no particle is
+    // partly loaded.
+    std::map<types::boundary_id, Tensor<1, dim>> sum;
+    std::map<types::boundary_id, double>         weight;
+    std::map<types::boundary_id, unsigned int>   n_partial;
+    for (auto &[k, parts] : face_parts)
+      for (auto &[id, part] : parts)
+        {
+          const auto          &areas = particles.boundary_area_vectors(k);
+          const auto           own   = areas.find(id);
+          const Tensor<1, dim> n     = own == areas.end() ?
+                                         Tensor<1, dim>() :
+                                         own->second / own->second.norm();
+          double plane_area = own == areas.end() ? 0. : own->second.norm();
+          bool   shared     = false;
+          for (const auto &[other, area] : areas)
+            if (other != id && std::abs(n * area) > (1. - 1e-10) * area.norm())
+              {
+                plane_area += area.norm();
+                shared = true;
+              }
+          part.edge = (part.vanishes || shared) && plane_area > 0;
+          // eq. 4.32 alone, for the report
+          Tensor<1, dim> plain;
+          if (from_test_functions && own != areas.end())
+            {
+              plain = traction_load(k, id, own->second);
+              resultants[id].point_force += plain;
+            }
+          if (!from_test_functions || own == areas.end())
+            part.load = part.integral;
+          else if (part.edge)
+            {
+              part.partial = true;
+              const double c =
+                particles.on_interface(k) || area_weights.empty() ?
+                  plane_area :
+                  area_weights[k].at(id);
+              part.load = (c / plane_area) * part.integral;
+              n_partial[id] += part.loaded;
+            }
+          else
+            part.load = plain;
+          sum[id] += part.load;
+          weight[id] += part.magnitude;
+        }
+    if (from_test_functions)
+      for (auto &[k, parts] : face_parts)
+        for (auto &[id, part] : parts)
+          if (n_partial[id] > 0 && weight[id] > 0 && part.magnitude > 0)
+            {
+              part.load += (part.magnitude / weight[id]) *
+                           (resultants[id].exact_force - sum[id]);
+              part.partial = true;
+            }
+
+    for (const auto &[k, parts] : face_parts)
+      for (const auto &[id, part] : parts)
+        {
+          Resultant &r = resultants[id];
+          r.force += part.load;
+          add_moment<dim>(particles.position(k) - r.centre,
+                          part.load,
+                          r.moment);
+          r.n_partly_loaded += (part.edge && part.loaded);
+        }
+  }
+
+
+
+  template <int dim>
+  std::vector<typename ParticleLoads<dim>::Resultant>
+  ParticleLoads<dim>::neumann_resultants() const
+  {
+    std::vector<Resultant> result;
+    if (from_exact_stress || !have_neumann_cells)
+      return result;
+    update_partial_loads();
+    for (const auto &[id, r] : resultants)
+      result.push_back(r);
+    return result;
   }
 
 

@@ -335,6 +335,24 @@ namespace pg
         first = false;
       }
     out << "},\n";
+    if (!s.neumann_resultants.empty())
+      {
+        out << "  \"neumann_resultants\": {";
+        for (unsigned int i = 0; i < s.neumann_resultants.size(); ++i)
+          {
+            const auto &r = s.neumann_resultants[i];
+            out << (i > 0 ? ", " : "") << "\"" << static_cast<int>(r.id)
+                << "\": {\"area\": " << json_number(r.area)
+                << ", \"centre\": " << json_list(r.centre)
+                << ", \"force\": " << json_list(r.force)
+                << ", \"exact_force\": " << json_list(r.exact_force)
+                << ", \"eq_4_32_force\": " << json_list(r.point_force)
+                << ", \"moment\": " << json_list(r.moment)
+                << ", \"exact_moment\": " << json_list(r.exact_moment)
+                << ", \"n_partly_loaded\": " << r.n_partly_loaded << "}";
+          }
+        out << "},\n";
+      }
     if (!s.box_reactions.empty())
       {
         out << "  \"box_reactions\": [";

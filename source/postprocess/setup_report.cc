@@ -1,6 +1,7 @@
 #include <pg/postprocess/setup_report.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -173,6 +174,47 @@ namespace pg
                     << " % of the Neumann area)\n";
             }
         }
+      // The resultant and moment of the ids with partly loaded particles
+      // (the loads there are corrected; summary.json has every id).
+      for (const auto &r : summary.neumann_resultants)
+        if (r.n_partly_loaded > 0)
+          {
+            double force = 0, difference = 0;
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                force += r.exact_force[c] * r.exact_force[c];
+                difference += (r.force[c] - r.exact_force[c]) *
+                              (r.force[c] - r.exact_force[c]);
+              }
+            force      = std::sqrt(force);
+            difference = std::sqrt(difference);
+            // round-off (below 1e-12 of the scale) printed as 0
+            const auto print = [](const std::vector<double> &v,
+                                  const double               scale) {
+              std::ostringstream out;
+              out << std::setprecision(6);
+              for (unsigned int c = 0; c < v.size(); ++c)
+                out << (c > 0 ? " " : "")
+                    << (std::abs(v[c]) <= 1e-12 * scale ? 0. : v[c]);
+              return out.str();
+            };
+            std::ostringstream relative;
+            if (difference <= 1e-12 * force)
+              relative << "< 1e-12";
+            else
+              relative << std::scientific << std::setprecision(2)
+                       << (force > 0 ? difference / force : difference);
+            const double length = std::pow(r.area, 1. / (dim - 1));
+            pcout << "  Neumann " << static_cast<int>(r.id)
+                  << ", partly loaded (" << r.n_partly_loaded
+                  << " particles at the edge of the load), at t = 1:\n"
+                  << "    resultant " << print(r.force, force) << ", exact "
+                  << print(r.exact_force, force) << " (relative difference "
+                  << relative.str() << ")\n"
+                  << "    moment about (" << print(r.centre, length)
+                  << "): " << print(r.moment, force * length) << ", exact "
+                  << print(r.exact_moment, force * length) << "\n";
+          }
       if (formulation.variational_consistency)
         {
           std::ostringstream vc;

@@ -90,6 +90,14 @@ namespace pg
     const auto &owned_dofs    = discretization.owned_dofs;
     const auto &relevant_dofs = discretization.relevant_dofs;
 
+    // every meshfree cell with a Neumann face, on every rank (the exact
+    // resultants and the loads at the edges of loaded regions)
+    std::vector<CellIterator> neumann_cells;
+    for (const auto &cell : discretization.dof_handler.active_cell_iterators())
+      if (discretization.meshfree[cell->active_cell_index()] &&
+          loads.has_neumann_face(cell))
+        neumann_cells.push_back(cell);
+    particle_loads.set_neumann_cells(neumann_cells);
     compute_unit_stress_residual();
 
     SupportCheck::check_boundary_ids(prm.boundary_conditions,

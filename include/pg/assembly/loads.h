@@ -8,6 +8,8 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/vector.h>
 
+#include <vector>
+
 namespace pg
 {
   /**
@@ -34,6 +36,17 @@ namespace pg
     /** Is @p id in 'Neumann' or in 'Neumann stress'? */
     bool
     is_neumann(const types::boundary_id id) const;
+
+    /** The ids of 'Neumann' and 'Neumann stress', ascending, each once. */
+    std::vector<types::boundary_id>
+    neumann_ids() const;
+
+    /**
+     * The load factor t of the traction functions (their time, set by
+     * AllParameters::set_load_factor()).
+     */
+    double
+    load_factor() const;
 
     /**
      * The prescribed traction (force per reference area) on boundary @p id

@@ -29,7 +29,11 @@ namespace pg
    *    VC) the traction T_b c_b of every Neumann part b at k, with c_b the
    *    area of part b in the unit-stress residual d^k (pg-methods.md
    *    section 8.2, eqs. 4.32-4.35; the geometric |a^k| on the FE/meshfree
-   *    interface),
+   *    interface), where the traction covers the particle's whole area;
+   *    at the edge of a loaded region (partly loaded particles, see
+   *    update_partial_loads()) the test-function area times the average
+   *    traction over the particle's faces, corrected so that the resultant
+   *    of every Neumann id is its face integral,
    *  - with 'exact stress' the internal force of the exact stress in place
    *    of body force and tractions at the loaded surface particles,
    *  - otherwise ('geometry') the FE-consistent face traction of Loads on
@@ -117,6 +121,42 @@ namespace pg
     typename Assembler<dim>::LoadTerm
     load_term() const;
 
+    /**
+     * All meshfree cells with a Neumann face (on every rank: the
+     * triangulation is shared). Their faces give the exact resultants and
+     * the partial-load correction; without this call both are off.
+     */
+    void
+    set_neumann_cells(const std::vector<CellIterator> &cells);
+
+    /**
+     * The resultant of the traction of one Neumann id on the particles
+     * against the exact one, the face integral of the traction over the
+     * meshfree faces of the id (QGauss(2), as on the FE side), and the
+     * moments about the face centre (the area centroid of those faces):
+     * one component (z) in 2-D, three in 3-D.
+     */
+    struct Resultant
+    {
+      types::boundary_id id   = 0;
+      double             area = 0;
+      Point<dim>         centre;
+      Tensor<1, dim>     force, exact_force;
+      /** 'test functions': the resultant of eq. 4.32 alone, T(X^k) c_b. */
+      Tensor<1, dim>      point_force;
+      std::vector<double> moment, exact_moment;
+      /** Particles of the id at the edge of its loaded region. */
+      unsigned int n_partly_loaded = 0;
+    };
+
+    /**
+     * The Resultant of every Neumann id at the current load factor, the
+     * same on every rank ('test functions' and 'geometry'; empty with
+     * 'exact stress' and before set_neumann_cells()).
+     */
+    std::vector<Resultant>
+    neumann_resultants() const;
+
   private:
     /** The load (force units) of particle @p k, dim components. */
     void
@@ -125,6 +165,21 @@ namespace pg
     /** 'geometry': the FE-consistent traction on the meshfree faces. */
     void
     add_meshfree_face_tractions(Assembler<dim> &assembler) const;
+
+    /**
+     * The face integrals of the traction at the current load factor (once
+     * per load factor): per Neumann id the exact force and moment, per
+     * particle k and id b the integral of N_k T over k's faces of b, and
+     * the loads of the partly loaded particles (FacePart::load).
+     */
+    void
+    update_partial_loads() const;
+
+    /** The traction load of part @p id of particle @p k (force units). */
+    Tensor<1, dim>
+    traction_load(const unsigned int       k,
+                  const types::boundary_id id,
+                  const Tensor<1, dim>    &area) const;
 
     const Loads<dim>                &loads;
     const ParticleSet<dim>          &particles;
@@ -138,6 +193,37 @@ namespace pg
 
     std::vector<Tensor<1, dim>>                       unit_stress_residual;
     std::vector<std::map<types::boundary_id, double>> area_weights;
+
+    /**
+     * set_neumann_cells(); the particle of each vertex (invalid_unsigned_int
+     * for the vertices of finite elements only).
+     */
+    std::vector<CellIterator> neumann_cells;
+    std::vector<unsigned int> particle_of_vertex;
+    bool                      have_neumann_cells = false;
+
+    /** Per particle and Neumann id, at the load factor partial_time. */
+    struct FacePart
+    {
+      /** int N_k T dA and int N_k |T| dA over k's faces of the id. */
+      Tensor<1, dim> integral;
+      double         magnitude = 0;
+      /** |T| = 0 / > 0 at some quadrature point of these faces. */
+      bool vanishes = false, loaded = false;
+      /**
+       * At the edge of the loaded region (T = 0 on some of the faces, or
+       * another id in the same plane). With 'test functions' `partial`
+       * says that the load is `load`, not eq. 4.32 (at the edge, and at
+       * every loaded particle of an id that has edge particles).
+       */
+      bool           edge = false, partial = false;
+      Tensor<1, dim> load;
+    };
+    mutable double partial_time;
+    /** Only the particles on Neumann faces (particle -> id -> part). */
+    mutable std::map<unsigned int, std::map<types::boundary_id, FacePart>>
+                                                    face_parts;
+    mutable std::map<types::boundary_id, Resultant> resultants;
   };
 } // namespace pg
 
