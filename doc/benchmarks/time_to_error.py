@@ -6,7 +6,7 @@ on this machine (see each page for the date and the load):
 
   cook_3d/results.txt                 B-12, 3-D Cook on irregular particles
                                       (panel a: nu = 0.357; b: 0.4999999)
-  punch_3d/results.txt                B-11, 3-D punch (nu = 0.4, 0.49999)
+  punch_3d/results_constraint.txt     B-11, 3-D punch (nu = 0.4, 0.49999; cut families)
   near_incompressible_cook/results.txt 2-D Cook, nu = 0.4999 (regular mesh)
 
 and, for each case, prints the wall time in which each method reaches a
@@ -56,7 +56,7 @@ def cook_3d(panel, reference):
 
 def punch_3d(nu, reference):
     runs = {}
-    for r in rows("punch_3d/results.txt"):
+    for r in rows("punch_3d/results_constraint.txt"):
         if r[0] != nu or r[9] != "0" or number(r[6]) != 1.0:
             continue
         error = abs(number(r[5]) / reference - 1)

@@ -271,14 +271,13 @@ namespace pg
               const Tensor<1, dim> *V = &kernel_table.trial[q * n_nodes];
               for (unsigned int a = 0; a < m; ++a)
                 {
-                  const double wp = w * pi[q * m + a];
+                  const double       wp  = w * pi[q * m + a];
                   const unsigned int row = particles.original(members[a]);
                   for (unsigned int b = 0; b < n_nodes; ++b)
                     for (unsigned int c = 0; c < dim; ++c)
                       if (index[b * dim + c] >= 0)
                         B(row, index[b * dim + c]) +=
-                          wp * V[b][c] *
-                          (b < m ? signs[b * dim + c] : 1.);
+                          wp * V[b][c] * (b < m ? signs[b * dim + c] : 1.);
                   for (unsigned int b = 0; b < m; ++b)
                     M(row, particles.original(members[b])) +=
                       wp * pi[q * m + b];

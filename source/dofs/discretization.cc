@@ -126,15 +126,15 @@ namespace pg
                             "> (subsection 'Discretization'): set "
                             "'Symmetry treatment = constraint', or model the "
                             "full body."));
-            AssertThrow(discretization_parameters.nearest_neighbours == 0,
-                        ExcBadParameter(
-                          "Boundary conditions/Symmetry treatment",
-                          "mirror",
-                          "'Nearest neighbours' (subsection "
-                          "'Discretization') gives no horizon within which "
-                          "to mirror the particles. Use 'Horizon factor' "
-                          "or 'Horizon', or set 'Symmetry treatment = "
-                          "constraint'."));
+            AssertThrow(
+              discretization_parameters.nearest_neighbours == 0,
+              ExcBadParameter("Boundary conditions/Symmetry treatment",
+                              "mirror",
+                              "'Nearest neighbours' (subsection "
+                              "'Discretization') gives no horizon within which "
+                              "to mirror the particles. Use 'Horizon factor' "
+                              "or 'Horizon', or set 'Symmetry treatment = "
+                              "constraint'."));
             double reach = 0;
             for (unsigned int k = 0; k < particles.n_particles(); ++k)
               reach = std::max(reach,

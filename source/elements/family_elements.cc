@@ -406,7 +406,7 @@ namespace pg
     // image j of particle o across the planes M, the reflection of
     // family o's gradient for the image of k across M
     const auto [member, index] = member_family_index(k, j);
-    Tensor<1, dim> g           = master_test[member][index];
+    Tensor<1, dim>     g       = master_test[member][index];
     const unsigned int image   = families.members(k)[j];
     for (unsigned int c = 0; c < dim; ++c)
       g[c] *= particles.mirror_sign(image, c);
@@ -420,13 +420,12 @@ namespace pg
   FamilyElements<dim>::member_family_index(const unsigned int k,
                                            const unsigned int j) const
   {
-    const unsigned int image    = families.members(k)[j];
-    const unsigned int member   = particles.original(image);
-    const unsigned int master   = particles.mirror_image(k,
-                                                       particles.mirror_mask(
-                                                         image));
-    const auto         family_j = families.members(member);
-    const auto         found =
+    const unsigned int image  = families.members(k)[j];
+    const unsigned int member = particles.original(image);
+    const unsigned int master =
+      particles.mirror_image(k, particles.mirror_mask(image));
+    const auto family_j = families.members(member);
+    const auto found =
       std::lower_bound(family_j.begin() + 1, family_j.end(), master);
     Assert(found != family_j.end() && *found == master,
            ExcMessage("The families are not pairwise."));

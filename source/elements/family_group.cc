@@ -83,10 +83,9 @@ namespace pg
       for (unsigned int c = 0; c < dim; ++c)
         {
           dofs[b * dim + c] = particles.dof(members[b], c);
-          y[b][c]           = particles.position(members[b])[c] -
-                    particles.position(k)[c] +
-                    particles.mirror_sign(members[b], c) *
-                      u_at[dofs[b * dim + c]];
+          y[b][c] =
+            particles.position(members[b])[c] - particles.position(k)[c] +
+            particles.mirror_sign(members[b], c) * u_at[dofs[b * dim + c]];
         }
   }
 

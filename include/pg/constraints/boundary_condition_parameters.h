@@ -32,8 +32,8 @@ namespace pg
        * full body) or 'constraint' (the dissertation's: n . u = 0 only,
        * the families end at the plane).
        */
-      bool mirror_symmetry = true;
-      std::vector<types::boundary_id>                               neumann;
+      bool                            mirror_symmetry = true;
+      std::vector<types::boundary_id> neumann;
       /** Boundary ids loaded by sigma . n from 'Boundary stress'. */
       std::vector<types::boundary_id> neumann_stress;
       /**

@@ -76,7 +76,7 @@ namespace pg
       const Parameters::Discretization &discretization_parameters,
       const Parameters::Cpd            &cpd_parameters,
       const std::function<bool(const CellIterator &)> &loaded_by_face_traction,
-      const std::vector<types::boundary_id>           &mirror_symmetry_ids = {});
+      const std::vector<types::boundary_id> &mirror_symmetry_ids = {});
 
     /** 'Geometry', replaced per mesh by the inf-sup analysis. */
     Parameters::Geometry geometry;

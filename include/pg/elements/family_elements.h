@@ -214,7 +214,6 @@ namespace pg
     family_share(const unsigned int k) const;
 
   private:
-
     /** correct() of the table of family @p k. */
     void
     correct(const unsigned int k, QuadratureTable<dim> &table) const;
