@@ -15,6 +15,10 @@
 # mixed U2P1 (eq. 6.10, p and Theta linear per family) as a pair too, and
 # the mixed codes with nodal p and Theta, Unl+P1C and U2P1C; and the
 # incompressible IUnlP0 at nu = 0.5 with the same shear modulus.
+# NU=0.3 (issue 45: the locking ratio tip(0.4999) / tip(0.3) of each code on
+# each mesh) runs the same codes at that nu with the same E, without the
+# IUnlP0 rows and the figure, into near_incompressible_cook/results_nu0.3.txt;
+# NS="4 8 16" limits the meshes (default 4 8 16 32 64).
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/near_incompressible_cook.sh build-release/applications/pg_solve/pg_solve
 set -e
@@ -22,7 +26,10 @@ PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
 OUT=doc/benchmarks/near_incompressible_cook
 WORK=$(mktemp -d)
 mkdir -p "$OUT" doc/figures
+NU=${NU:-0.4999}
+NS=${NS:-4 8 16 32 64}
 RESULTS="$OUT/results.txt"
+[ "$NU" = 0.4999 ] || RESULTS="$OUT/results_nu$NU.txt"
 
 run() { # label formulation N [meshfree region [horizon factor [nu [E]]]]
   # ONLY=<label>: run that method alone and append its rows
@@ -30,7 +37,7 @@ run() { # label formulation N [meshfree region [horizon factor [nu [E]]]]
   name=$(echo "$1_$3" | tr ' /' '__')
   region=${4:-all}
   horizon=${5:-2.51}
-  nu=${6:-0.4999}
+  nu=${6:-$NU}
   E=${7:-108.571428571428571}
   [ "$2" = FEM ] || [ "$2" = "FEM Q1P0" ] && region=none
   cat > "$WORK/$name.prm" <<END
@@ -88,7 +95,7 @@ END
 if [ -z "$PLOT_ONLY" ]; then
 [ -n "$ONLY" ] || echo "# label | formulation | N | DoFs | tip u_y | Newton steps | seconds per Newton step (assembly + solve) | total seconds" > "$RESULTS"
 run reference "FEM Q1P0" 256
-for N in 4 8 16 32 64; do
+for N in $NS; do
   run "FEM Q1" FEM $N
   run "FEM Q1P0" "FEM Q1P0" $N
   run "VCBCPBG V5sn Unl" "VCBCPBG V5sn Unl" $N
@@ -107,11 +114,13 @@ for N in 4 8 16 32 64; do
   run "VCPBG V5sn U2P1C" "VCPBG V5sn U2P1C" $N all 3.51
   # the incompressible IUnlP0 at nu = 0.5 with the same mu = E / (2 (1 +
   # 0.4999)) (E = 3 mu): the incompressible limit of the reference problem
+  [ "$NU" = 0.4999 ] || continue
   run "VCBCPBG V5sn IUnlP0" "VCBCPBG V5sn IUnlP0" $N all 2.51 0.5 108.578667149239
   run "VCBCPPG V3sn IUnlP0" "VCBCPPG V3sn IUnlP0" $N all 2.51 0.5 108.578667149239
 done
 rm -rf "$WORK"
 fi
+[ "$NU" = 0.4999 ] || exit 0
 
 # Debian's python3 has matplotlib (python3-matplotlib); a python3 without it
 # skips the figure.

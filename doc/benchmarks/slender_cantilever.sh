@@ -5,28 +5,36 @@
 # lines bottom 2, right 3, top 4, left 5. Used as a slender cantilever,
 # L/h = 10: clamped on the left (5), a dead shear traction 0.01 (total
 # P = 1e-3) on the right (3); plane strain, isochoric-volumetric neo-Hooke,
-# E = 1000, nu = 0.4999. Tip u_y at (0.5, 0.05) for Global refinement
+# E = 1000, nu = $NU (default 0.4999). Tip u_y at (0.5, 0.05) for Global refinement
 # 0 ... 3 (4 to 32 cells through the thickness), for FEM Q1, Q1P0 and the
 # displacement and mixed PG codes (default horizon factor, direct solver).
 # Reference: Q1P0 at refinement 4 (with 'Stagnation tolerance = 1e-4':
 # there the direct solve's round-off floor is 7.7e-6 |R_0|). (Timoshenko's beam, P L^3 / (3 E' I) +
 # P L / (kappa G A) with E' = E / (1 - nu^2), kappa = 5/6, gives 3.036e-3
 # without the clamped end's restraint of the cross-section.)
-# Writes doc/benchmarks/slender_cantilever/results.txt.
+# Writes doc/benchmarks/slender_cantilever/results_nu<NU>.txt. Locking
+# measured apart from softness (issue 45): run it at NU=0.3 as well; when
+# results_nu0.4999.txt and results_nu0.3.txt both exist, the script writes
+# locking_ratios.txt: per code and refinement tip(0.4999) / tip(0.3) against
+# the exact ratio (plane-strain Timoshenko, as above, at both nu; and FEM
+# Q1P0 at refinement 4 at both nu). RATIOS_ONLY=1 only rewrites that file.
 # Usage (from the repository root):
 #   sh doc/benchmarks/slender_cantilever.sh build-release/applications/pg_solve/pg_solve
+#   NU=0.3 sh doc/benchmarks/slender_cantilever.sh build-release/applications/pg_solve/pg_solve
 set -e
 PG_SOLVE=${1:-build-release/applications/pg_solve/pg_solve}
+NU=${NU:-0.4999}
+OUT=doc/benchmarks/slender_cantilever
+if [ -z "$RATIOS_ONLY" ]; then
 MESH=${MESH:-/usr/share/petsc/3.18/share/petsc/datafiles/meshes/square_quad.msh}
 [ -r "$MESH" ] || {
   echo "$MESH not found: install libpetsc3.18-dev-examples or set MESH=<path>"
   exit 1
 }
-OUT=doc/benchmarks/slender_cantilever
 WORK=$(mktemp -d)
 mkdir -p "$OUT"
-RESULTS="$OUT/results.txt"
-echo "# formulation | global refinement | DoFs | tip u_y | Newton iterations" > "$RESULTS"
+RESULTS="$OUT/results_nu$NU.txt"
+echo "# nu = $NU: formulation | global refinement | DoFs | tip u_y | Newton iterations" > "$RESULTS"
 
 run() { # formulation refinement
   cat > "$WORK/run.prm" <<END
@@ -42,7 +50,7 @@ end
 subsection Material
   set Model           = isochoric-volumetric neo-Hooke
   set Young's modulus = 1000
-  set Poisson's ratio = 0.4999
+  set Poisson's ratio = $NU
 end
 subsection Boundary conditions
   set Dirichlet = 5: xy
@@ -87,3 +95,41 @@ for r in 0 1 2 3; do
   done
 done
 rm -rf "$WORK"
+fi
+
+# the locking ratio tip(nu = 0.4999) / tip(nu = 0.3) of each code on each
+# mesh against the exact one
+[ -r "$OUT/results_nu0.4999.txt" ] && [ -r "$OUT/results_nu0.3.txt" ] || exit 0
+/usr/bin/env python3 - "$OUT/results_nu0.4999.txt" "$OUT/results_nu0.3.txt" \
+  > "$OUT/locking_ratios.txt" <<'END'
+import sys
+def read(name):
+    t = {}
+    for l in open(name):
+        r = [c.strip() for c in l.split("|")]
+        if l.startswith("#") or len(r) != 5 or r[2] == "-":
+            continue
+        t[(r[0], int(r[1]))] = float(r[3])
+    return t
+a, b = read(sys.argv[1]), read(sys.argv[2])
+# plane-strain Timoshenko: P L^3 / (3 E' I) + P L / (kappa G A), E' = E /
+# (1 - nu^2), G = E / (2 (1 + nu)), kappa = 5/6, per unit depth
+E, P, L, h = 1000.0, 1e-3, 1.0, 0.1
+def timoshenko(nu):
+    return (P * L**3 / (3 * E / (1 - nu * nu) * h**3 / 12)
+            + P * L / (5 / 6 * E / (2 * (1 + nu)) * h))
+exact = timoshenko(0.4999) / timoshenko(0.3)
+print("# Timoshenko (plane strain): tip %.5e (nu = 0.4999), %.5e (nu = 0.3), "
+      "ratio %.4f" % (timoshenko(0.4999), timoshenko(0.3), exact))
+q = ("FEM Q1P0", 4)
+if q in a and q in b:
+    print("# FEM Q1P0, refinement 4: tip %.5e (nu = 0.4999), %.5e (nu = 0.3), "
+          "ratio %.4f" % (a[q], b[q], a[q] / b[q]))
+print("# formulation | refinement | tip(0.4999) | tip(0.3) | ratio | "
+      "ratio / Timoshenko ratio")
+for k in a:
+    if k in b:
+        print("%s | %d | %.5e | %.5e | %.4f | %.3f" % (
+            k[0], k[1], a[k], b[k], a[k] / b[k], a[k] / b[k] / exact))
+END
+cat "$OUT/locking_ratios.txt"
