@@ -56,6 +56,15 @@ POINTS=$(awk -v n="$N" -v m="$M" 'BEGIN {
 [ -n "$PLOT_ONLY" ] ||
   echo "# formulation | DoFs | t reached | remaining thickness (%) | t of last completed step | max u_x | max -u_y | load steps completed | step cuts | Newton iterations | wall (s) | exit code | stop message (shortened)" >> "$RESULTS"
 
+# SYMMETRY_TREATMENT=mirror|constraint: the left edge as a 'Symmetry'
+# plane with that treatment (prm/punch_2d.prm holds it by u_x = 0 as a
+# Dirichlet condition, which cuts the families there like 'constraint')
+SYMMETRY_BLOCK=""
+[ -z "$SYMMETRY_TREATMENT" ] || SYMMETRY_BLOCK="subsection Boundary conditions
+  set Dirichlet          = 2: y
+  set Symmetry           = 0
+  set Symmetry treatment = $SYMMETRY_TREATMENT
+end"
 if [ -z "$PLOT_ONLY" ]; then
 k=0
 echo "$FORMULATIONS" | tr '|' '\n' | while read -r f; do
@@ -73,6 +82,7 @@ subsection Output
   set VTU       = false
   set Points    = $POINTS
 end
+$SYMMETRY_BLOCK
 END
   rc=0
   "$PG_SOLVE" "$WORK/run.prm" > "$WORK/run$k.log" 2>&1 || rc=$?

@@ -42,13 +42,14 @@ if [ "$SUFFIX" = _mirror ]; then FIG=${FIG:-doc/figures/punch_3d.png}; else FIG=
 mkdir -p "$OUT" "$(dirname "$FIG")"
 if [ "$MODEL" = full ]; then
   # the whole block: patch -0.05 <= x, y <= 0.05, its vertices held in x
-  # and y, n x n x n/2 cells over the full width (h of the quarter's
-  # n/2)
+  # and y, n x n x n/4 cells (the spacing of the quarter's n/2)
+  NZ_DIVISOR=4
   GEOMETRY="  set Lower corner = -0.1, -0.1, 0"
   BOXES="  set Dirichlet boxes = -0.05, -0.05, 0.05 : 0.05, 0.05, 0.05 : xy"
   SYMMETRY="  set Symmetry ="
   PATCH="if(abs(x) < a - e, 1, if(abs(x) < a + e, 0.5, 0)) * if(abs(y) < a - e, 1, if(abs(y) < a + e, 0.5, 0))"
 else
+  NZ_DIVISOR=2
   GEOMETRY=""
   BOXES=""
   SYMMETRY="  set Symmetry = 0, 2"
@@ -83,7 +84,7 @@ echo "$RUNS" | tr ';' '\n' | while IFS='|' read -r nu f solver ns; do
     cat > "$WORK/run.prm" <<END
 include $ROOT/prm/punch_3d.prm
 subsection Geometry
-  set Subdivisions = $n, $n, $((n / 2))
+  set Subdivisions = $n, $n, $((n / NZ_DIVISOR))
 $GEOMETRY
 end
 subsection Boundary conditions
@@ -115,9 +116,9 @@ END
     rm -rf "$WORK/out"
     rc=0
     "$PG_SOLVE" "$WORK/run.prm" > "$WORK/run.log" 2>&1 || rc=$?
-    "$PYTHON" - "$WORK/out" "$nu" "$f" "$n" "$rc" >> "$RESULTS" <<'END'
+    "$PYTHON" - "$WORK/out" "$nu" "$f" "$n" "$rc" "$NZ_DIVISOR" >> "$RESULTS" <<'END'
 import json, re, sys
-out, nu, name, n, rc = sys.argv[1:6]
+out, nu, name, n, rc, nz_divisor = sys.argv[1:7]
 try:
     s = json.load(open(out + "/summary.json"))
 except OSError:
@@ -134,7 +135,7 @@ point = s.get("points", {}).get("punch centre")
 uz = "%.6g" % point[2] if point else (rows[-1][6] if rows else "-")
 short = msg.split(". ")[0] if msg else "finished"
 print("%s | %s | %s | %d | %d | %s | %.4f | %d | %.1f | %s | %s" % (
-    nu, name, n, (int(n) + 1) ** 2 * (int(n) // 2 + 1), s["n_dofs"], uz, t, s["newton_iterations"],
+    nu, name, n, (int(n) + 1) ** 2 * (int(n) // int(nz_divisor) + 1), s["n_dofs"], uz, t, s["newton_iterations"],
     s["timing"]["total"], rc, short))
 END
     tail -n 1 "$RESULTS"
