@@ -60,11 +60,13 @@ namespace pg
           "reflections of their originals; the plane is then no boundary "
           "for the families, the VC correction and the loads, and a half "
           "or quarter model gives the full body's solution. The planes "
-          "must be normal to coordinate axes. constraint: n . u = 0 alone, "
-          "the dissertation's treatment: the families are cut off at the "
-          "plane, which makes the model softer than the full body (+47 % "
-          "at the centre of the 3-D punch's quarter with VCPBG Unl, n = "
-          "4). Finite elements are the same either way.");
+          "must be normal to coordinate axes; CPD, VC2, the VC option p "
+          "and 'Nearest neighbours' are not built for it. constraint: n . "
+          "u = 0 alone, the dissertation's treatment: the families are cut "
+          "off at the plane, which makes the model softer than the full "
+          "body (the 3-D punch's quarter, VCPBG Unl, n = 4, linear: +47 % "
+          "against the reference where mirror and the full block give "
+          "+15 %). Finite elements are the same either way.");
         prm.declare_entry("Neumann",
                           "",
                           Patterns::Anything(),
