@@ -1,6 +1,7 @@
 #include <pg/analysis/inf_sup.h>
 #include <pg/analysis/inf_sup_analysis.h>
 #include <pg/base/exceptions.h>
+#include <pg/elements/element_group.h>
 #include <pg/elements/nodal_pressure.h>
 #include <pg/elements/q1_cell.h>
 #include <pg/elements/quadrature_table.h>
@@ -135,14 +136,8 @@ namespace pg
           assemble_element(table, y, t_material, residual, &t_local);
         assemble_element(table, y, s_material, residual, &s_local);
         // mirror images: reflected components
-        for (unsigned int i = 0; i < signs.size(); ++i)
-          if (signs[i] != 1.)
-            for (auto *local : {&t_local, &s_local})
-              for (unsigned int j = 0; j < signs.size(); ++j)
-                {
-                  (*local)(i, j) *= signs[i];
-                  (*local)(j, i) *= signs[i];
-                }
+        apply_dof_signs(signs, t_local);
+        apply_dof_signs(signs, s_local);
         zero_constraints.distribute_local_to_global(t_local, dofs, T);
         zero_constraints.distribute_local_to_global(s_local, dofs, S);
       };
@@ -255,13 +250,8 @@ namespace pg
             }
           assemble_element(kernel_table, y, s_material, residual, &local);
           // mirror images: reflected displacement components (the
-          // pressure is even)
-          for (unsigned int i = 0; i < signs.size(); ++i)
-            for (unsigned int j = 0; j < local.n(); ++j)
-              {
-                local(i, j) *= signs[i];
-                local(j, i) *= signs[i];
-              }
+          // bubble is even)
+          apply_dof_signs(signs, local);
           scatter(S);
 
           const std::vector<double> pi = nodal_field_interpolation(family);

@@ -56,26 +56,6 @@ namespace pg
 
 
 
-  void
-  apply_dof_signs(const std::vector<double> &signs, LocalSystem &local)
-  {
-    const unsigned int n = local.dofs.size();
-    AssertDimension(signs.size(), n);
-    for (unsigned int i = 0; i < n; ++i)
-      if (signs[i] != 1.)
-        {
-          local.residual[i] *= signs[i];
-          if (local.with_matrix)
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                local.matrix(i, j) *= signs[i];
-                local.matrix(j, i) *= signs[i];
-              }
-        }
-  }
-
-
-
   template <int dim>
   Assembler<dim>::Assembler(const AffineConstraints<double>        &constraints,
                             const std::vector<ElementGroup<dim> *> &groups)

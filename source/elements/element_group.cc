@@ -21,6 +21,34 @@ namespace pg
 
 
 
+  void
+  apply_dof_signs(const std::vector<double> &signs, FullMatrix<double> &matrix)
+  {
+    AssertIndexRange(signs.size(), std::min(matrix.m(), matrix.n()) + 1);
+    for (unsigned int i = 0; i < signs.size(); ++i)
+      if (signs[i] != 1.)
+        {
+          for (unsigned int j = 0; j < matrix.n(); ++j)
+            matrix(i, j) *= signs[i];
+          for (unsigned int j = 0; j < matrix.m(); ++j)
+            matrix(j, i) *= signs[i];
+        }
+  }
+
+
+
+  void
+  apply_dof_signs(const std::vector<double> &signs, LocalSystem &local)
+  {
+    AssertDimension(signs.size(), local.dofs.size());
+    for (unsigned int i = 0; i < signs.size(); ++i)
+      local.residual[i] *= signs[i];
+    if (local.with_matrix)
+      apply_dof_signs(signs, local.matrix);
+  }
+
+
+
   template <int dim>
   void
   ElementGroup<dim>::get_dof_signs(const unsigned int,

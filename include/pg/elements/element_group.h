@@ -69,6 +69,14 @@ namespace pg
   apply_dof_signs(const std::vector<double> &signs, LocalSystem &local);
 
   /**
+   * The tangent part of the above: K_ij *= s_i s_j for the first
+   * signs.size() local DoFs of @p matrix (the others, e.g. a bubble or a
+   * pressure node, are even).
+   */
+  void
+  apply_dof_signs(const std::vector<double> &signs, FullMatrix<double> &matrix);
+
+  /**
    * Everything that assembles is an element group (architecture.md section
    * 7): the Q1 cells, the PG families, the CPD interactions, later the mixed
    * cells and families. A group knows its locally owned elements, their DoF
