@@ -358,7 +358,7 @@ namespace pg
           family_volume += v;
         // the family's share of the model: V^k / its member volume (1/2^m
         // for a master on m mirror planes, whose family is its own image)
-        const double share = family_share(k);
+        const double share = particles.family_share(k);
         if (formulation.points == FormulationCode::Points::u1)
           table.add_point(share * geom.volumes[0],
                           master[k],
@@ -380,7 +380,7 @@ namespace pg
            ExcInternalError());
     table.reinit(n, false);
     table.trial.reserve((n - 1) * n);
-    const double share = family_share(k);
+    const double share = particles.family_share(k);
     for (unsigned int j = 1; j < n; ++j)
       {
         trial_at(j);
@@ -430,15 +430,6 @@ namespace pg
     Assert(found != family_j.end() && *found == master,
            ExcMessage("The families are not pairwise."));
     return {member, static_cast<unsigned int>(found - family_j.begin())};
-  }
-
-
-
-  template <int dim>
-  double
-  FamilyElements<dim>::family_share(const unsigned int k) const
-  {
-    return particles.volume(k) / particles.member_volume(k);
   }
 
 

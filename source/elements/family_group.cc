@@ -354,11 +354,8 @@ namespace pg
                             scratch.xi,
                             scratch.y,
                             scratch.volumes,
-                            // the family's share of the model (mirror
-                            // planes: FamilyElements::family_share())
                             stabilisation.hourglass_constants[e] *
-                              this->particles.volume(k) /
-                              this->particles.member_volume(k),
+                              this->particles.family_share(k),
                             local.residual,
                             tangent);
       }

@@ -475,6 +475,16 @@ namespace pg
 
   template <int dim>
   double
+  ParticleSet<dim>::family_share(const unsigned int k) const
+  {
+    AssertIndexRange(k, n_real);
+    return volume(k) / member_volume(k);
+  }
+
+
+
+  template <int dim>
+  double
   ParticleSet<dim>::member_volume(const unsigned int j) const
   {
     const unsigned int k = original(j);

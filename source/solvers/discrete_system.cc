@@ -304,9 +304,9 @@ namespace pg
           }
         stabilisation.implicit_gradients.push_back(std::move(h));
         // of the particle's volume in the mirrored body, times the
-        // family's share of the model (FamilyElements::family_share())
+        // family's share of the model (ParticleSet::family_share())
         stabilisation.second_moments.push_back(
-          particles.volume(k) / particles.member_volume(k) *
+          particles.family_share(k) *
           particle_second_moment<dim>(particles.member_volume(k)));
       }
     return stabilisation;

@@ -203,17 +203,6 @@ namespace pg
     std::pair<unsigned int, unsigned int>
     member_family_index(const unsigned int k, const unsigned int j) const;
 
-  public:
-    /**
-     * The share of family @p k in the model: V^k over its member volume,
-     * 1/2^m for a master on m mirror symmetry planes (its family is its
-     * own mirror image, shared with the mirrored body), 1 elsewhere. The
-     * weights of its table carry it.
-     */
-    double
-    family_share(const unsigned int k) const;
-
-  private:
     /** correct() of the table of family @p k. */
     void
     correct(const unsigned int k, QuadratureTable<dim> &table) const;
@@ -287,7 +276,7 @@ namespace pg
           family_volume += v;
         const bool u1 = (formulation.points == FormulationCode::Points::u1);
         const unsigned int n_points = u1 ? 1 : n;
-        const double       share    = family_share(k);
+        const double       share    = particles.family_share(k);
         Tensor<2, dim>     weighted_projector;
         for (unsigned int q = 0; q < n_points; ++q)
           {
@@ -300,7 +289,7 @@ namespace pg
           add(members[a], k, diagonal(phi[k][a]) * weighted_projector);
         return;
       }
-    const double share = family_share(k);
+    const double share = particles.family_share(k);
     for (unsigned int j = 1; j < n; ++j)
       {
         const double w = share * geom.volumes[j];

@@ -124,6 +124,15 @@ namespace pg
     member_volume(const unsigned int j) const;
 
     /**
+     * The share of the family of real particle @p k in the model: volume()
+     * over member_volume(), 1/2^m for a master on m mirror planes (its
+     * family is its own mirror image, shared with the mirrored body), 1
+     * elsewhere. The weights of the family's elements carry it.
+     */
+    double
+    family_share(const unsigned int k) const;
+
+    /**
      * @p v without its components normal to the mirror planes that real
      * particle @p k lies on: the part of a row of particle k that the
      * symmetry does not fix (the normal part of its unit-stress residual
