@@ -115,9 +115,8 @@ namespace pg
           (is_cpd && cpd_parameters.partial_volumes ? 0.5 : 0.);
         if (particles.n_mirror_planes() > 0)
           {
-            // CPD counts each interaction of the lattice once, and VC2
-            // solves its own system: neither is built for mirror images
-            AssertThrow(!is_cpd && !formulation.second_order_consistency,
+            // VC2 solves its own system, not built for mirror images
+            AssertThrow(!formulation.second_order_consistency,
                         ExcBadParameter(
                           "Boundary conditions/Symmetry treatment",
                           "mirror",

@@ -236,6 +236,10 @@ namespace pg
                                 "three-neighbour interactions exist in 3-D "
                                 "only; set it to 0 in a 2-D run."));
 
+    // With mirror planes the vertices of an interaction may be images
+    // (numbered from n_particles on, after every real particle): the
+    // interaction is stored at its smallest (real) vertex, and only the
+    // real vertices take its energy and count it in their quadrature.
     const unsigned int n_particles = particles.n_particles();
     for (auto &o : offsets)
       o.assign(n_particles + 1, 0);
@@ -243,9 +247,21 @@ namespace pg
     // sums over the ordered tuples at each particle of prod(beta V)
     std::vector<std::array<double, 3>> tuple_sums(n_particles, {{0, 0, 0}});
 
+    // whether j is in the family of i; for an image i, reflect both so that
+    // i becomes its original (no image has a family of its own)
     const auto is_neighbour = [&](const unsigned int i, const unsigned int j) {
-      const auto m = families.members(i);
-      return std::binary_search(m.begin() + 1, m.end(), j);
+      const unsigned int o = particles.original(i);
+      const unsigned int r =
+        (o == i ? j : particles.reflection(j, particles.mirror_mask(i)));
+      const auto m = families.members(o);
+      return r != numbers::invalid_unsigned_int &&
+             std::binary_search(m.begin() + 1, m.end(), r);
+    };
+    const auto count = [&](const unsigned int v,
+                           const unsigned int order,
+                           const double       tuples) {
+      if (v < n_particles)
+        quadrature[v][order] += tuples;
     };
     const double collinear = 1e-8;
 
@@ -268,7 +284,8 @@ namespace pg
           }
         AssertThrow(n <= 65535, ExcMessage("CPD: a family has 65536 members"));
         for (unsigned int p = 1; p < n; ++p)
-          quadrature[a][3] += bond_factor(a, M[p]) * particles.volume(M[p]);
+          quadrature[a][3] +=
+            bond_factor(a, M[p]) * particles.member_volume(M[p]);
 
         // the first member with a larger index than the master
         unsigned int first = 1;
@@ -278,8 +295,8 @@ namespace pg
           if (bond_factor(a, M[p]) > 0)
             {
               vertices[0].push_back(p);
-              quadrature[a][0] += 1;
-              quadrature[M[p]][0] += 1;
+              count(a, 0, 1);
+              count(M[p], 0, 1);
             }
         offsets[0][a + 1] = vertices[0].size();
         if (cpd.C2 != 0 || cpd.C3 != 0)
@@ -305,7 +322,7 @@ namespace pg
                         vertices[1].push_back(p);
                         vertices[1].push_back(q);
                         for (const unsigned int v : {a, M[p], M[q]})
-                          quadrature[v][1] += 2;
+                          count(v, 1, 2);
                       }
                     if (dim == 3 && cpd.C3 != 0)
                       for (unsigned int r = q + 1; r < n; ++r)
@@ -322,7 +339,7 @@ namespace pg
                                 vertices[2].push_back(r);
                                 for (const unsigned int v :
                                      {a, M[p], M[q], M[r]})
-                                  quadrature[v][2] += 6;
+                                  count(v, 2, 6);
                               }
                           }
                   }
@@ -337,7 +354,7 @@ namespace pg
       double product = 1;
       for (const unsigned int m : tuple)
         if (m != v)
-          product *= bond_factor(v, m) * particles.volume(m);
+          product *= bond_factor(v, m) * particles.member_volume(m);
       return product;
     };
     std::vector<unsigned int> tuple;
@@ -361,9 +378,15 @@ namespace pg
                              const std::size_t,
                              const std::vector<unsigned int> &t) {
       for (const unsigned int v : t)
-        tuple_sums[v][order] += (order == 1 ? 2. : 6.) * others(v, t);
+        if (v < n_particles)
+          tuple_sums[v][order] += (order == 1 ? 2. : 6.) * others(v, t);
     });
 
+    // The weights sum over the real vertices v only, with the volume V^v
+    // of the model (a share 1/2^m of the member volume for v on m mirror
+    // planes; the members' volumes are the full body's). Then the energy is
+    // sum_v V^v Psi^v over the real particles, the full body's divided by
+    // the number of its mirrored copies.
     // bonds: 1/2 (V^a w_1^a(i) + V^i w_1^i(a)) with w_1^a(i) = beta V^i
     for (unsigned int a = 0; a < n_particles; ++a)
       {
@@ -371,8 +394,12 @@ namespace pg
         for (std::size_t e = offsets[0][a]; e < offsets[0][a + 1]; ++e)
           {
             const unsigned int i = M[vertices[0][e]];
-            weights[0].push_back(bond_factor(a, i) * particles.volume(a) *
-                                 particles.volume(i));
+            const double       w =
+              (i < n_particles ?
+                 0.5 * (particles.volume(a) * particles.member_volume(i) +
+                        particles.volume(i) * particles.member_volume(a)) :
+                 0.5 * particles.volume(a) * particles.member_volume(i));
+            weights[0].push_back(bond_factor(a, i) * w);
           }
       }
     // triangles: 1/3 sum_v V^v 2 w_2^v, tetrahedra: 1/4 sum_v V^v 6 w_3^v,
@@ -384,8 +411,9 @@ namespace pg
                              const std::vector<unsigned int> &t) {
       double w = 0;
       for (const unsigned int v : t)
-        w += particles.volume(v) * std::pow(quadrature[v][3], order + 1) *
-             others(v, t) / tuple_sums[v][order];
+        if (v < n_particles)
+          w += particles.volume(v) * std::pow(quadrature[v][3], order + 1) *
+               others(v, t) / tuple_sums[v][order];
       weights[order][e] = (order == 1 ? 2. / 3. : 6. / 4.) * w;
     });
   }

@@ -3,6 +3,8 @@
 #include <pg/elements/family_group.h>
 #include <pg/elements/u1_stabilisation.h>
 
+#include <algorithm>
+
 namespace pg
 {
   namespace
@@ -418,21 +420,37 @@ namespace pg
     // rank the j-l entries also come from family j (j and l are
     // neighbours); on more, a rank writes them into rows it may not own,
     // so they must be in its own pattern.
+    // A mirror image has its original's DoFs: each DoF once.
+    const auto unique = [](std::vector<types::global_dof_index> &v) {
+      std::sort(v.begin(), v.end());
+      v.erase(std::unique(v.begin(), v.end()), v.end());
+    };
     std::vector<types::global_dof_index> dofs;
     this->get_dof_indices(e, dofs);
     std::vector<types::global_dof_index> block(2 * dim);
     for (const auto &[p, q] :
          interactions.coupled_members(this->owned_families[e]))
       {
+        block.resize(2 * dim);
         for (unsigned int c = 0; c < dim; ++c)
           {
             block[c]       = dofs[p * dim + c];
             block[dim + c] = dofs[q * dim + c];
           }
+        unique(block);
         constraints.add_entries_local_to_global(block, sparsity, true);
       }
-    const std::vector<types::global_dof_index> row(dofs.begin(),
-                                                   dofs.begin() + dim);
+    // each member's own block: the constrained DoFs get their diagonal
+    // entry from AffineConstraints::distribute_local_to_global() in every
+    // element they belong to, also in rows that another rank owns
+    for (unsigned int b = 1; b < dofs.size() / dim; ++b)
+      {
+        block.assign(dofs.begin() + b * dim, dofs.begin() + (b + 1) * dim);
+        constraints.add_entries_local_to_global(block, sparsity, true);
+      }
+    std::vector<types::global_dof_index> row(dofs.begin(),
+                                             dofs.begin() + dim);
+    unique(dofs);
     constraints.add_entries_local_to_global(row, dofs, sparsity, true);
     constraints.add_entries_local_to_global(dofs, row, sparsity, true);
   }

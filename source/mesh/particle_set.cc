@@ -443,6 +443,17 @@ namespace pg
 
 
   template <int dim>
+  unsigned int
+  ParticleSet<dim>::reflection(const unsigned int j,
+                               const unsigned int mask) const
+  {
+    const unsigned int k = original(j);
+    return image_indices[k][(mirror_mask(j) ^ mask) & ~plane_masks[k]];
+  }
+
+
+
+  template <int dim>
   double
   ParticleSet<dim>::mirror_sign(const unsigned int j,
                                 const unsigned int c) const

@@ -10,20 +10,22 @@
 // y^3), 10 z) t, which is even across the three coordinate planes: the solution
 // is the mirror image of itself. The models: 2-D full, half (x >= 0, plane x =
 // 0) and quarter (planes x = 0 and y = 0); 3-D full, quarter (x, y >= 0)
-// and octant (three planes). Each prints the largest difference of the
+// and octant (three planes). CPD (bonds, triangles, tetrahedra in 3-D,
+// partial volumes) has interactions between particles and images and
+// between images across different planes. Each prints the largest difference of the
 // displacement at three points against the full body, relative to the
 // largest displacement there: round-off (1e-10; 1e-9 for the coupled
 // model, whose Newton iterations stop at slightly different residuals)
-// for every displacement, VC and mixed code, FEM and the stabilised U1
-// codes, also with FE/meshfree coupling, on 1 and 2 ranks.
+// for every displacement, VC and mixed code, FEM, the stabilised U1 codes
+// and CPD, also with FE/meshfree coupling, on 1 and 2 ranks.
 //
 // Then what differs: 'Symmetry treatment = constraint' (the dissertation's
 // u_n = 0 with families cut off at the plane) is softer than the full
 // body; the FE/meshfree-coupled VCBCPBG system is singular (FE coupling
 // plus a surface: the factors have a null-space part, chosen differently
 // in each model, doc/element-view.md section 5) and agrees to 1e-3 only;
-// CPD, VC2, 'Nearest neighbours', option p and planes that are not normal
-// to a coordinate axis are refused with a message.
+// VC2, 'Nearest neighbours', option p and planes that are not normal to a
+// coordinate axis are refused with a message.
 
 #include "../tests.h"
 #include "problem_fixture.h"
@@ -85,6 +87,12 @@ parameters(const Model       &model,
     << (dim == 3 ? "; 10*z*t" : "") << "\n"
     << "  end\n"
     << "end\n"
+    << (formulation == "CPD" ?
+          // bonds, triangles (and tetrahedra in 3-D), partial volumes
+          std::string("subsection CPD\n  set C1 = 1000\n  set C2 = 500\n") +
+            (dim == 3 ? "  set C3 = 100\n" : "") +
+            "  set Partial volumes = true\nend\n" :
+          std::string())
     << "subsection Output\n"
     << "  set VTU = false\n  set Directory = output_mirror_symmetry\n"
     << "  set Points = "
@@ -204,21 +212,22 @@ main(int argc, char **argv)
                                         "VCPPG V3sn UnlP0",
                                         "PBG U2P1",
                                         "VCPBG V5sn U2P1C",
-                                        "VCPBG V5sn Unl+P1C"})
+                                        "VCPBG V5sn Unl+P1C",
+                                        "CPD"})
     compare<2>(formulation);
   compare<2>("PBG U1", "  set Hourglass coefficient = 0.1\n");
   compare<2>("VCBCPPG V3sn Unl", "", 1e-9, "ball 0,0 : 1.3");
   compare<2>("VCBCPBG V5sn Unl", "", 1e-3, "ball 0,0 : 1.3");
   for (const std::string formulation :
-       {"FEM", "PBG Unl", "VCBCPBG V5sn Unl", "VCBCPPG V3sn Unl"})
+       {"FEM", "PBG Unl", "VCBCPBG V5sn Unl", "VCBCPPG V3sn Unl", "CPD"})
     compare<3>(formulation);
 
   constraint_treatment<2>("VCBCPBG V5sn Unl");
   constraint_treatment<3>("PBG Unl");
+  constraint_treatment<2>("CPD");
 
   deallog << "Refused with mirrored families:" << std::endl;
   const Model quarter = models<2>()[2];
-  refused<2>("CPD", "", quarter);
   refused<2>("VC2PPG V1s U2", "", quarter);
   refused<2>("PBG Unl", "  set Nearest neighbours = 8\n", quarter);
   refused<2>("VCPBG V5p Unl", "", quarter);

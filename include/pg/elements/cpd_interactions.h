@@ -87,7 +87,14 @@ namespace pg
    * family of its vertex with the smallest index (no double counting), as
    * local member indices of that family, so that one family's
    * interactions form one element of the global matrix; its blocks couple
-   * neighbours only (the tangent has the one-horizon stencil).
+   * neighbours only (the tangent has the one-horizon stencil). With mirror
+   * planes (ParticleSet::add_mirror_images) a vertex may be an image; the
+   * images are numbered after the real particles, so the interaction is
+   * stored at its smallest real vertex, and only its real vertices v carry
+   * its energy, with their volumes V^v in the model (the share of a
+   * particle on a plane) and the full body's member volumes in the
+   * weights: the energy is the full body's over the number of mirrored
+   * copies, and the folded residual and tangent are its exact derivatives.
    *
    * **Energy.** E = sum_v V^v Psi^v with the point energy of eq. (14),
    * Psi^v = 1/2 sum_i w_1 psi_1 + 1/3 sum_(i,j) w_2 psi_2 + 1/4

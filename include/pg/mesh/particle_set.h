@@ -108,6 +108,16 @@ namespace pg
     mirror_image(const unsigned int k, const unsigned int mask) const;
 
     /**
+     * The particle or image at the reflection of particle or image @p j
+     * across the planes @p mask, or numbers::invalid_unsigned_int if that
+     * image was not made (it then lies farther than the reach of
+     * add_mirror_images() from a plane, beyond every horizon of the model's
+     * particles).
+     */
+    unsigned int
+    reflection(const unsigned int j, const unsigned int mask) const;
+
+    /**
      * +1, or -1 for a displacement component @p c < dim of an image
      * across a plane normal to axis c: u_c(image) = mirror_sign(j, c)
      * u_c(original(j)). Extra nodal fields (pressure) are even: +1.
