@@ -18,6 +18,9 @@
 # locking_ratios.txt: per code and refinement tip(0.4999) / tip(0.3) against
 # the exact ratio (plane-strain Timoshenko, as above, at both nu; and FEM
 # Q1P0 at refinement 4 at both nu). RATIOS_ONLY=1 only rewrites that file.
+# WEIGHTS="particle volumes" (issue 45, deliverable 5) runs the PBG codes
+# with 'Quadrature weights = particle volumes' at refinements 0-2 and
+# writes results_nu<NU>_particle_volumes.txt.
 # Usage (from the repository root):
 #   sh doc/benchmarks/slender_cantilever.sh build-release/applications/pg_solve/pg_solve
 #   NU=0.3 sh doc/benchmarks/slender_cantilever.sh build-release/applications/pg_solve/pg_solve
@@ -33,7 +36,12 @@ MESH=${MESH:-/usr/share/petsc/3.18/share/petsc/datafiles/meshes/square_quad.msh}
 }
 WORK=$(mktemp -d)
 mkdir -p "$OUT"
-RESULTS="$OUT/results_nu$NU.txt"
+WEIGHTS=${WEIGHTS:-horizon}
+if [ "$WEIGHTS" = horizon ]; then
+  RESULTS="$OUT/results_nu$NU.txt"
+else
+  RESULTS="$OUT/results_nu${NU}_particle_volumes.txt"
+fi
 echo "# nu = $NU: formulation | global refinement | DoFs | tip u_y | Newton iterations" > "$RESULTS"
 
 run() { # formulation refinement
@@ -46,6 +54,7 @@ subsection Geometry
 end
 subsection Discretization
   set Formulation = $1
+  set Quadrature weights = $WEIGHTS
 end
 subsection Material
   set Model           = isochoric-volumetric neo-Hooke
@@ -84,6 +93,16 @@ END
   tail -n 1 "$RESULTS"
 }
 
+if [ "$WEIGHTS" != horizon ]; then
+  for r in 0 1 2; do
+    for f in "BCPBG Unl" "VCBCPBG V5sn Unl" "VCBCPBG V5sn UnlP0" \
+      "VCBCPBG V5sn Unl+P1C"; do
+      run "$f" $r
+    done
+  done
+  rm -rf "$WORK"
+  exit 0
+fi
 # at 103,000 DoFs the direct solve's round-off floor is 7.7e-6 |R_0|
 STAGNATION=1e-4
 run "FEM Q1P0" 4

@@ -171,6 +171,22 @@ namespace pg
             formulation.stabilisation_part(),
             base,
             discretization_parameters.weight_exponent);
+        if (discretization_parameters.particle_volume_weights)
+          {
+            AssertThrow(
+              !is_cpd && formulation.method == FormulationCode::Method::pbg &&
+                formulation.points != FormulationCode::Points::u1,
+              ExcBadParameter(
+                "Discretization/Quadrature weights",
+                "particle volumes",
+                "it scales the weights of the PBG family quadrature at "
+                "every member (Unl, U2, U1SUnl, UnlP0, Unl+P1C), which <" +
+                  formulation.text +
+                  "> does not use. Set 'Quadrature weights = horizon'."));
+            (stabilisation_elements ? stabilisation_elements :
+                                      family_elements)
+              ->use_particle_volume_weights();
+          }
         for (unsigned int k = 0; k < particles.n_particles(); ++k)
           if (owned_dofs.is_element(particles.dof(k, 0)))
             owned_families.push_back(k);

@@ -127,6 +127,21 @@ namespace pg
           "exception of 1000 times the particle spacing', read as a "
           "self-bond of 1/1000 of the spacing: nearly interpolating at the "
           "master; doc/ambiguities.md). Must be > 0.");
+        prm.declare_entry(
+          "Quadrature weights",
+          "horizon",
+          Patterns::Selection("horizon|particle volumes"),
+          "The weights of the PBG Unl family quadrature. horizon: V^k V^j / "
+          "V^{H^k} at member j of family k (eq. 4.30, the source's); they "
+          "give a particle on the surface about 0.73 of its volume and the "
+          "rows inside more, so a coarse beam is soft in bending (the "
+          "section's second moment 0.83 of the exact one with 4 particles "
+          "through the thickness). particle volumes: each of these weights "
+          "divided by the sum of V^{k'} / V^{H^{k'}} over the families k' "
+          "that hold j, so that the weights at every particle add up to its "
+          "volume (doc/benchmarks/mixed_formulations.md). PBG codes with Unl "
+          "points (also UnlP0, Unl+P1C, U1SUnl) only; with a VC code the "
+          "patch test stays exact, without VC it is not.");
       }
       prm.leave_subsection();
     }
@@ -187,6 +202,8 @@ namespace pg
         weight_exponent       = prm.get_double("Weight exponent");
         hourglass_coefficient = prm.get_double("Hourglass coefficient");
         self_weight_distance  = prm.get_double("Self-weight distance");
+        particle_volume_weights =
+          (prm.get("Quadrature weights") == "particle volumes");
       }
       prm.leave_subsection();
     }

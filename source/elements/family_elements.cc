@@ -367,8 +367,7 @@ namespace pg
           for (unsigned int j = 0; j < n; ++j)
             {
               trial_at(j);
-              table.add_point(share * geom.volumes[0] * geom.volumes[j] /
-                                family_volume,
+              table.add_point(unl_point_weight(k, geom, family_volume, j),
                               g,
                               particles.position(members[j]));
             }
@@ -391,6 +390,54 @@ namespace pg
         table.add_test_vector(formulation.method == Method::ppg1 ? 0 : j, t);
         table.add_test_vector(formulation.method == Method::ppg1 ? j : 0, -t);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  FamilyElements<dim>::use_particle_volume_weights()
+  {
+    Assert(formulation.method == FormulationCode::Method::pbg,
+           ExcInternalError());
+    // c(k) = V^k / V^{H^k} with the member (full body) volumes
+    const unsigned int  n = particles.n_particles();
+    std::vector<double> c(n, 0.);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        double family_volume = 0;
+        for (const unsigned int j : families.members(k))
+          family_volume += particles.member_volume(j);
+        c[k] = particles.member_volume(k) / family_volume;
+      }
+    // s(o) = sum of c over o's family (o itself first): the families that
+    // hold o are its members' (an image's c is its original's)
+    particle_weight_factors.assign(n, 0.);
+    for (unsigned int o = 0; o < n; ++o)
+      {
+        double s = 0;
+        for (const unsigned int j : families.members(o))
+          s += c[particles.original(j)];
+        particle_weight_factors[o] = 1. / s;
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  FamilyElements<dim>::unl_point_weight(
+    const unsigned int                         k,
+    const ShapeFunctions::FamilyGeometry<dim> &geometry,
+    const double                               family_volume,
+    const unsigned int                         q) const
+  {
+    const double w = particles.family_share(k) * geometry.volumes[0] *
+                     geometry.volumes[q] / family_volume;
+    if (particle_weight_factors.empty())
+      return w;
+    return w * particle_weight_factors[particles.original(
+                 families.members(k)[q])];
   }
 
 

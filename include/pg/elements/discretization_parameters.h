@@ -42,6 +42,12 @@ namespace pg
        * of a member at this distance (units of the shortest bond).
        */
       double self_weight_distance = 1e-3;
+      /**
+       * 'Quadrature weights = particle volumes': the PBG Unl weights scaled
+       * so that they add up to each particle's volume
+       * (FamilyElements::use_particle_volume_weights()).
+       */
+      bool particle_volume_weights = false;
 
       static void
       declare_parameters(ParameterHandler &prm);

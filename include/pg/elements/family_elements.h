@@ -63,6 +63,21 @@ namespace pg
     check_family(const unsigned int k, const bool master_only) const;
 
     /**
+     * PBG Unl only ('Discretization/Quadrature weights = particle volumes',
+     * issue 45, deliverable 5): scale the weight V^k V^j / V^{H^k} of every
+     * point j by 1/s(j), s(j) = sum over the families k' that hold j
+     * (j's own and those of its members: the families are pairwise) of
+     * V^{k'} / V^{H^{k'}}, so that the weights at each particle add up to
+     * its volume, at the surface too (eq. 4.30 gives the surface rows
+     * 0.72-0.75 of theirs, tests/elements/surface_quadrature_01). The sum
+     * of all weights stays the body's volume only approximately; the VC
+     * correction, built with the same weights, keeps the patch test.
+     * Call before initialize().
+     */
+    void
+    use_particle_volume_weights();
+
+    /**
      * Build the table of family @p k (throws like initialize()). After
      * set_correction_factors() the test functions (and for PBG the trial
      * functions, which are the same) carry the VC correction.
@@ -176,6 +191,18 @@ namespace pg
 
   private:
     /**
+     * The weight of point @p q (member q) of the PBG Unl table of family
+     * @p k with volumes @p geometry and V^{H^k} = @p family_volume: the
+     * share of the family times V^k V^q / V^{H^k} (eq. 4.30), times the
+     * factor of use_particle_volume_weights().
+     */
+    double
+    unl_point_weight(const unsigned int                         k,
+                     const ShapeFunctions::FamilyGeometry<dim> &geometry,
+                     const double                               family_volume,
+                     const unsigned int                         q) const;
+
+    /**
      * The VC correction of a gradient of family @p k at member @p point for
      * node @p a: phi^{ka} Q^{k,point} alpha^k, with the bond projector Q
      * for V5 at points other than the master (identity otherwise).
@@ -252,6 +279,11 @@ namespace pg
     std::vector<std::vector<Tensor<1, dim>>> phi;
     /** VC correction factors per particle; empty: uncorrected. */
     std::vector<Tensor<1, dim>> alpha;
+    /**
+     * The factor 1/s of use_particle_volume_weights() per real particle;
+     * empty: the weights of eq. 4.30.
+     */
+    std::vector<double> particle_weight_factors;
   };
 
 
@@ -274,17 +306,14 @@ namespace pg
         double family_volume = 0;
         for (const double v : geom.volumes)
           family_volume += v;
-        const bool u1 = (formulation.points == FormulationCode::Points::u1);
-        const unsigned int n_points = u1 ? 1 : n;
-        const double       share    = particles.family_share(k);
-        Tensor<2, dim>     weighted_projector;
-        for (unsigned int q = 0; q < n_points; ++q)
-          {
-            const double w =
-              share * (u1 ? geom.volumes[0] :
-                            geom.volumes[0] * geom.volumes[q] / family_volume);
-            weighted_projector += w * projector(geom, q);
-          }
+        Tensor<2, dim> weighted_projector;
+        if (formulation.points == FormulationCode::Points::u1)
+          weighted_projector =
+            particles.family_share(k) * geom.volumes[0] * projector(geom, 0);
+        else
+          for (unsigned int q = 0; q < n; ++q)
+            weighted_projector +=
+              unl_point_weight(k, geom, family_volume, q) * projector(geom, q);
         for (unsigned int a = 0; a < n; ++a)
           add(members[a], k, diagonal(phi[k][a]) * weighted_projector);
         return;
