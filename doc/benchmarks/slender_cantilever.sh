@@ -18,9 +18,10 @@
 # locking_ratios.txt: per code and refinement tip(0.4999) / tip(0.3) against
 # the exact ratio (plane-strain Timoshenko, as above, at both nu; and FEM
 # Q1P0 at refinement 4 at both nu). RATIOS_ONLY=1 only rewrites that file.
-# WEIGHTS="particle volumes" (issue 45, deliverable 5) runs the PBG codes
-# with 'Quadrature weights = particle volumes' at refinements 0-2 and
-# writes results_nu<NU>_particle_volumes.txt.
+# WEIGHTS_STUDY=1 (issue 45, deliverable 5) runs BCPBG Unl and the VCBCPBG
+# codes Unl, UnlP0, Unl+P1C at refinements 0-2 with both 'Quadrature
+# weights' (horizon, eq. 4.30; particle volumes) and writes
+# results_nu<NU>_weights.txt.
 # Usage (from the repository root):
 #   sh doc/benchmarks/slender_cantilever.sh build-release/applications/pg_solve/pg_solve
 #   NU=0.3 sh doc/benchmarks/slender_cantilever.sh build-release/applications/pg_solve/pg_solve
@@ -36,11 +37,11 @@ MESH=${MESH:-/usr/share/petsc/3.18/share/petsc/datafiles/meshes/square_quad.msh}
 }
 WORK=$(mktemp -d)
 mkdir -p "$OUT"
-WEIGHTS=${WEIGHTS:-horizon}
-if [ "$WEIGHTS" = horizon ]; then
+WEIGHTS=horizon
+if [ -z "$WEIGHTS_STUDY" ]; then
   RESULTS="$OUT/results_nu$NU.txt"
 else
-  RESULTS="$OUT/results_nu${NU}_particle_volumes.txt"
+  RESULTS="$OUT/results_nu${NU}_weights.txt"
 fi
 echo "# nu = $NU: formulation | global refinement | DoFs | tip u_y | Newton iterations" > "$RESULTS"
 
@@ -81,7 +82,9 @@ subsection Output
 end
 END
   if "$PG_SOLVE" "$WORK/run.prm" > "$WORK/run.log" 2>&1; then
-    /usr/bin/env python3 - "$WORK/out/summary.json" "$1" "$2" >> "$RESULTS" <<'END'
+    LABEL="$1"
+    [ -n "$WEIGHTS_STUDY" ] && LABEL="$1 ($WEIGHTS)"
+    /usr/bin/env python3 - "$WORK/out/summary.json" "$LABEL" "$2" >> "$RESULTS" <<'END'
 import json, sys
 s = json.load(open(sys.argv[1]))
 print("%s | %s | %d | %.5e | %d" % (sys.argv[2], sys.argv[3], s["n_dofs"],
@@ -93,11 +96,13 @@ END
   tail -n 1 "$RESULTS"
 }
 
-if [ "$WEIGHTS" != horizon ]; then
-  for r in 0 1 2; do
-    for f in "BCPBG Unl" "VCBCPBG V5sn Unl" "VCBCPBG V5sn UnlP0" \
-      "VCBCPBG V5sn Unl+P1C"; do
-      run "$f" $r
+if [ -n "$WEIGHTS_STUDY" ]; then
+  for WEIGHTS in horizon "particle volumes"; do
+    for r in 0 1 2; do
+      for f in "BCPBG Unl" "VCBCPBG V5sn Unl" "VCBCPBG V5sn UnlP0" \
+        "VCBCPBG V5sn Unl+P1C"; do
+        run "$f" $r
+      done
     done
   done
   rm -rf "$WORK"

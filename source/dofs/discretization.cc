@@ -183,8 +183,7 @@ namespace pg
                 "every member (Unl, U2, U1SUnl, UnlP0, Unl+P1C), which <" +
                   formulation.text +
                   "> does not use. Set 'Quadrature weights = horizon'."));
-            (stabilisation_elements ? stabilisation_elements :
-                                      family_elements)
+            (stabilisation_elements ? stabilisation_elements : family_elements)
               ->use_particle_volume_weights();
           }
         for (unsigned int k = 0; k < particles.n_particles(); ++k)

@@ -257,12 +257,11 @@ namespace pg
       return r != numbers::invalid_unsigned_int &&
              std::binary_search(m.begin() + 1, m.end(), r);
     };
-    const auto count = [&](const unsigned int v,
-                           const unsigned int order,
-                           const double       tuples) {
-      if (v < n_particles)
-        quadrature[v][order] += tuples;
-    };
+    const auto count =
+      [&](const unsigned int v, const unsigned int order, const double tuples) {
+        if (v < n_particles)
+          quadrature[v][order] += tuples;
+      };
     const double collinear = 1e-8;
 
     std::vector<char> adjacent;

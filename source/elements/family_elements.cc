@@ -436,8 +436,8 @@ namespace pg
                      geometry.volumes[q] / family_volume;
     if (particle_weight_factors.empty())
       return w;
-    return w * particle_weight_factors[particles.original(
-                 families.members(k)[q])];
+    return w *
+           particle_weight_factors[particles.original(families.members(k)[q])];
   }
 
 

@@ -448,8 +448,7 @@ namespace pg
         block.assign(dofs.begin() + b * dim, dofs.begin() + (b + 1) * dim);
         constraints.add_entries_local_to_global(block, sparsity, true);
       }
-    std::vector<types::global_dof_index> row(dofs.begin(),
-                                             dofs.begin() + dim);
+    std::vector<types::global_dof_index> row(dofs.begin(), dofs.begin() + dim);
     unique(dofs);
     constraints.add_entries_local_to_global(row, dofs, sparsity, true);
     constraints.add_entries_local_to_global(dofs, row, sparsity, true);

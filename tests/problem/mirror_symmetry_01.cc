@@ -12,8 +12,8 @@
 // 0) and quarter (planes x = 0 and y = 0); 3-D full, quarter (x, y >= 0)
 // and octant (three planes). CPD (bonds, triangles, tetrahedra in 3-D,
 // partial volumes) has interactions between particles and images and
-// between images across different planes. Each prints the largest difference of the
-// displacement at three points against the full body, relative to the
+// between images across different planes. Each prints the largest difference of
+// the displacement at three points against the full body, relative to the
 // largest displacement there: round-off (1e-10; 1e-9 for the coupled
 // model, whose Newton iterations stop at slightly different residuals)
 // for every displacement, VC and mixed code, FEM, the stabilised U1 codes

@@ -64,9 +64,9 @@ weight_sums(const bool particle_volumes)
   if (particle_volumes)
     elements.use_particle_volume_weights();
   elements.initialize();
-  const unsigned int      n = particles.n_particles();
-  std::vector<double>     s(n, 0.);
-  pg::QuadratureTable<2>  table;
+  const unsigned int     n = particles.n_particles();
+  std::vector<double>    s(n, 0.);
+  pg::QuadratureTable<2> table;
   for (unsigned int k = 0; k < n; ++k)
     {
       elements.build(k, table);
@@ -74,12 +74,12 @@ weight_sums(const bool particle_volumes)
       for (unsigned int q = 0; q < members.size(); ++q)
         s[members[q]] += table.weights[q];
     }
-  double surface = 0, largest = 0;
+  double       surface = 0, largest = 0;
   unsigned int n_surface = 0;
   for (unsigned int j = 0; j < n; ++j)
     {
       s[j] /= particles.volume(j);
-      largest = std::max(largest, std::abs(s[j] - 1.));
+      largest           = std::max(largest, std::abs(s[j] - 1.));
       const Point<2> &x = particles.position(j);
       if (std::max(std::abs(x[0]), std::abs(x[1])) > 1 - 1e-12)
         {
@@ -121,8 +121,9 @@ main(int argc, char **argv)
                                      "VCPBG V5sn U1SUnl",
                                      "VCPBG V5sn U2"})
         {
-          const pg::RunSummary s = run_problem<2>(
-            patch_test(code, region, "particle volumes"), screen);
+          const pg::RunSummary s =
+            run_problem<2>(patch_test(code, region, "particle volumes"),
+                           screen);
           const bool exact = s.L2_relative < 1e-11 && s.H1_relative < 1e-11;
           deallog << "  " << std::left << std::setw(20) << code << std::right
                   << " round-off: " << (exact ? "yes" : "NO") << std::endl;
