@@ -1,3 +1,4 @@
+#include <pg/postprocess/output.h>
 #include <pg/postprocess/postprocessors.h>
 #include <pg/problem.h>
 
@@ -105,9 +106,10 @@ namespace pg
         if (fe_cells[particles.vertex(k)] > 0)
           summary.max_interface_stress_jump =
             std::max(summary.max_interface_stress_jump,
-                     std::abs(material.cauchy_stress(particle_F[k])[0][0] -
-                              fe_stress[particles.vertex(k)][0][0] /
-                                fe_cells[particles.vertex(k)]));
+                     std::abs(
+                       cauchy_stress_or_nan(material, particle_F[k])[0][0] -
+                       fe_stress[particles.vertex(k)][0][0] /
+                         fe_cells[particles.vertex(k)]));
 
       // (IUnlP0: the material is the isochoric part, and the pressure of
       // the particle's family, a DoF, adds p I; no FE cells. Its exact
@@ -120,8 +122,8 @@ namespace pg
           return fe_cells[vertex] > 0 ?
                      Tensor<2, 3>(fe_stress[vertex] / fe_cells[vertex]) :
                      Tensor<2, 3>();
-        const unsigned int k     = particle_at[vertex];
-        Tensor<2, 3>       sigma = material.cauchy_stress(particle_F[k]);
+        const unsigned int k = particle_at[vertex];
+        Tensor<2, 3> sigma   = cauchy_stress_or_nan(material, particle_F[k]);
         if (incompressible)
           sigma += u_all[particles.dof(k, dim)] *
                    Tensor<2, 3>(unit_symmetric_tensor<3>());

@@ -28,6 +28,27 @@ namespace pg
 
 
   template <int dim>
+  Tensor<2, 3>
+  cauchy_stress_or_nan(const Materials::Material<dim> &material,
+                       const Tensor<2, dim>           &F)
+  {
+    try
+      {
+        return material.cauchy_stress(F);
+      }
+    catch (...)
+      {
+        Tensor<2, 3> s;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            s[i][j] = std::numeric_limits<double>::quiet_NaN();
+        return s;
+      }
+  }
+
+
+
+  template <int dim>
   void
   stress_field_values(const Materials::Material<dim> &material,
                       const Tensor<2, dim>           &F,
@@ -41,23 +62,15 @@ namespace pg
     // Where F is inverted (J <= 0) the stress is undefined: written as NaN,
     // so ParaView shows the hole instead of a made-up value. This happens
     // for the Q1 interpolant of badly wrong PG solutions on meshfree cells.
-    Tensor<2, 3> s;
-    bool         defined = true;
-    try
-      {
-        s = material.cauchy_stress(F);
-        for (unsigned int i = 0; i < 3; ++i)
-          s[i][i] += pressure;
-      }
-    catch (...)
-      {
-        defined = false;
-      }
-    const double nan = std::numeric_limits<double>::quiet_NaN();
+    Tensor<2, 3> s = cauchy_stress_or_nan(material, F);
+    for (unsigned int i = 0; i < 3; ++i)
+      s[i][i] += pressure;
     for (const double v :
          {s[0][0], s[1][1], s[2][2], s[0][1], s[1][2], s[0][2]})
-      values.push_back(defined ? v : nan);
-    values.push_back(defined ? Materials::von_mises_stress(s) : nan);
+      values.push_back(v);
+    values.push_back(std::isfinite(s[0][0]) ?
+                       Materials::von_mises_stress(s) :
+                       std::numeric_limits<double>::quiet_NaN());
   }
 
 
@@ -435,6 +448,10 @@ namespace pg
                          const Tensor<2, 3> &,
                          std::vector<double> &,
                          const double);
+  template Tensor<2, 3>
+  cauchy_stress_or_nan<2>(const Materials::Material<2> &, const Tensor<2, 2> &);
+  template Tensor<2, 3>
+  cauchy_stress_or_nan<3>(const Materials::Material<3> &, const Tensor<2, 3> &);
   template class StressPostprocessor<2>;
   template class StressPostprocessor<3>;
   template class ParticleOutput<2>;

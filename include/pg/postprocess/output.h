@@ -25,6 +25,18 @@ namespace pg
   stress_field_names();
 
   /**
+   * The Cauchy stress of @p material at @p F (3 x 3, plane strain in 2-D),
+   * or NaN in every entry where it is undefined (J <= 0: an inverted
+   * element, or the correspondence F of a CPD particle, which is only a
+   * visual aid): output shows the hole instead of stopping a run whose
+   * solution is already computed.
+   */
+  template <int dim>
+  Tensor<2, 3>
+  cauchy_stress_or_nan(const Materials::Material<dim> &material,
+                       const Tensor<2, dim>           &F);
+
+  /**
    * The values belonging to stress_field_names() at @p F, with the
    * hydrostatic Cauchy stress @p pressure I added (IUnlP0, whose material is
    * the isochoric part and whose volumetric stress p J F^-T is p I in
