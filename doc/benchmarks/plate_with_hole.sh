@@ -19,7 +19,7 @@ if ! command -v gnuplot > /dev/null; then
   apt-get install -y -q gnuplot-nox > /dev/null
 fi
 
-cmake -S "$root" -B "$root/build-release" -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake -S "$root" -B "$root/build-release" -DCMAKE_BUILD_TYPE=Release -DPG_NATIVE_ARCH=ON > /dev/null
 cmake --build "$root/build-release" -j2 --target pg_study
 pg_study=$root/build-release/applications/pg_study/pg_study
 
