@@ -1,4 +1,5 @@
 #include <pg/base/exceptions.h>
+#include <pg/mesh/linear_cells.h>
 #include <pg/mesh/mesh_file.h>
 #include <pg/mesh/mesh_generator.h>
 #include <pg/mesh/meshfree_region.h>
@@ -524,7 +525,11 @@ namespace pg
           size.n_cells +
             n_coarse_vertices * std::pow(refined, static_cast<double>(dim - 1));
       size.spacing =
-        std::pow(std::abs(GridTools::volume(coarse)) / size.n_cells, 1. / dim);
+        std::pow(std::abs(
+                   GridTools::volume(coarse,
+                                     LinearCells<dim>(coarse).mapping())) /
+                   size.n_cells,
+                 1. / dim);
       return size;
     }
 
