@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <map>
@@ -37,6 +38,36 @@ namespace pg
                " given as 'File name' in subsection 'Geometry' cannot be "
                "read: " +
                reason + ". " + hint;
+      }
+
+
+
+      /**
+       * The Gmsh element type N of GridIn's message "The Element Identifier
+       * <N> is not supported", or 0.
+       */
+      unsigned int
+      gmsh_element_type(const std::string &message)
+      {
+        const std::string            key = "Element Identifier <";
+        const std::string::size_type p   = message.find(key);
+        if (p == std::string::npos)
+          return 0;
+        return std::atoi(message.c_str() + p + key.size());
+      }
+
+
+
+      /**
+       * Gmsh's second- and higher-order element types (lines, triangles,
+       * quadrilaterals, tetrahedra, hexahedra, prisms, pyramids of order 2
+       * to 5 and their serendipity forms).
+       */
+      bool
+      is_higher_order(const unsigned int type)
+      {
+        return (type >= 8 && type <= 14) || (type >= 16 && type <= 31) ||
+               (type >= 36 && type <= 39);
       }
 
 
@@ -301,6 +332,17 @@ namespace pg
       catch (const std::exception &exc)
         {
           reason = "deal.II's GridIn reports: " + user_message(exc);
+          const unsigned int type = gmsh_element_type(reason);
+          AssertThrow(format != GridIn<dim>::msh || !is_higher_order(type),
+                      ExcMessage(unreadable_file_message(
+                        file_name,
+                        "it contains second- or higher-order elements "
+                        "(Gmsh element type " +
+                          std::to_string(type) +
+                          "), and pg reads linear cells only (their "
+                          "vertices are the particles or the Q1 nodes)",
+                        "Mesh it with first-order elements (Gmsh: "
+                        "'Mesh.ElementOrder = 1', or 'gmsh -order 1').")));
         }
       while (!reason.empty() && reason.back() == '.')
         reason.pop_back();
@@ -343,6 +385,18 @@ namespace pg
       for (const auto &cell : triangulation.active_cell_iterators())
         {
           const double measure = cell->measure();
+          // GridIn renumbers inverted cells of a file; a negative measure
+          // here is a cell it could not fix
+          AssertThrow(measure > -1e-12 * std::pow(cell->diameter(), dim),
+                      ExcMessage(
+                        "Cell " + std::to_string(cell->active_cell_index()) +
+                        " of the mesh file " + file_name +
+                        " (given as 'File name' in subsection 'Geometry'), "
+                        "with its centre at " +
+                        format_point(cell->center()) + ", is inverted: " +
+                        (dim == 2 ? "its area" : "its volume") + " is " +
+                        std::to_string(measure) +
+                        ". Fix the numbering of its vertices in the mesh."));
           AssertThrow(measure > 1e-12 * std::pow(cell->diameter(), dim),
                       ExcMessage(
                         "Cell " + std::to_string(cell->active_cell_index()) +

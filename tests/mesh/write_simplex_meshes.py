@@ -15,7 +15,8 @@ Run it in tests/mesh/ to rewrite the files; the seed fixes them.
   second_order_triangles.msh  two 6-node triangles (refused)
   mixed_triangles_quads.msh   a triangle beside a quadrilateral (refused)
   flat_triangle.msh           a triangle whose vertices lie on a line
-  inverted_triangle.msh       a triangle numbered clockwise
+  inverted_triangle.msh       distorted_triangles.msh with a boundary triangle
+                              numbered clockwise
 """
 import itertools
 import random
@@ -106,6 +107,11 @@ def triangles():
         for t in tris:
             elements.append((2, 0, oriented(nodes, t)))
     write("distorted_triangles.msh", nodes, elements)
+    # the same with one triangle at the bottom edge numbered clockwise
+    first = next(i for i, e in enumerate(elements) if e[0] == 2)
+    kind, tag, vs = elements[first + 1]
+    elements[first + 1] = (kind, tag, [vs[1], vs[0], vs[2]])
+    write("inverted_triangle.msh", nodes, elements)
 
 
 def tetrahedra():
@@ -147,10 +153,6 @@ def bad_meshes():
     nodes = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (2, -1, 0)]
     write("flat_triangle.msh", nodes,
           [(2, 0, [0, 1, 2]), (2, 0, [1, 3, 2])])
-    # the second triangle is numbered clockwise
-    nodes = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0)]
-    write("inverted_triangle.msh", nodes,
-          [(2, 0, [0, 1, 2]), (2, 0, [1, 2, 3])])
 
 
 if __name__ == "__main__":
