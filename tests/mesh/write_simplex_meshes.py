@@ -12,6 +12,8 @@ Run it in tests/mesh/ to rewrite the files; the seed fixes them.
                             interior vertices moved by up to 0.3 h
   distorted_tetrahedra.msh  [-1,1]^3, 4 x 4 x 4 cubes, 384 tetrahedra,
                             interior vertices moved by up to 0.2 h
+  split_triangles.msh       [-1,1]^2, 6 x 6 squares, 72 triangles in two
+                            blocks whose 7 vertices at x = 0 are duplicated
   second_order_triangles.msh  two 6-node triangles (refused)
   mixed_triangles_quads.msh   a triangle beside a quadrilateral (refused)
   flat_triangle.msh           a triangle whose vertices lie on a line
@@ -71,15 +73,16 @@ def oriented(nodes, vs):
     return vs
 
 
-def boundary_tag(points, dim):
+def boundary_tag(points, dim, n=None):
     """The colorized id of a boundary face given by its grid indices."""
+    n = n_of[dim] if n is None else n
     for d in range(dim):
         values = {p[d] for p in points}
         if len(values) == 1:
             v = values.pop()
             if v == 0:
                 return 2 * d
-            if v == n_of[dim]:
+            if v == n:
                 return 2 * d + 1
     return None
 
@@ -112,6 +115,39 @@ def triangles():
     kind, tag, vs = elements[first + 1]
     elements[first + 1] = (kind, tag, [vs[1], vs[0], vs[2]])
     write("inverted_triangle.msh", nodes, elements)
+
+
+def split_triangles():
+    """A regular 6 x 6 triangle mesh in two blocks, x < 0 and x > 0, whose
+    vertices at x = 0 are duplicated (blocks not merged by the mesher)."""
+    n = 6
+    nodes, index = grid(n, 2, 0.0, 49)
+    copy = {}
+    for j in range(n + 1):
+        copy[(n // 2, j)] = len(nodes)
+        nodes.append(list(nodes[index[(n // 2, j)]]))
+
+    def vertex(i, j, right):
+        if right and i == n // 2:
+            return copy[(i, j)]
+        return index[(i, j)]
+
+    elements = []
+    for i in range(n):
+        for a, b in (((i, 0), (i + 1, 0)), ((i, n), (i + 1, n))):
+            right = i >= n // 2
+            elements.append((1, boundary_tag([a, b], 2, n),
+                             [vertex(*a, right), vertex(*b, right)]))
+        for a, b in (((0, i), (0, i + 1)), ((n, i), (n, i + 1))):
+            elements.append((1, boundary_tag([a, b], 2, n),
+                             [index[a], index[b]]))
+    for i, j in itertools.product(range(n), repeat=2):
+        right = i >= n // 2
+        v00, v10 = vertex(i, j, right), vertex(i + 1, j, right)
+        v01, v11 = vertex(i, j + 1, right), vertex(i + 1, j + 1, right)
+        for t in [(v00, v10, v11), (v00, v11, v01)]:
+            elements.append((2, 0, oriented(nodes, t)))
+    write("split_triangles.msh", nodes, elements)
 
 
 def tetrahedra():
@@ -157,5 +193,6 @@ def bad_meshes():
 
 if __name__ == "__main__":
     triangles()
+    split_triangles()
     tetrahedra()
     bad_meshes()

@@ -2,9 +2,12 @@
 // slice: meshfree only) stops with a message that names the parameter (or
 // the cell and its position) and says what to do: finite element cells on
 // a simplex mesh (a FEM formulation, a 'Meshfree region' other than all),
-// a mesh of triangles and quadrilaterals, second-order triangles, and a
-// triangle without area. A triangle numbered clockwise is not an error:
-// GridIn renumbers it, and the run passes the patch test.
+// a mesh of triangles and quadrilaterals, second-order triangles, a
+// triangle without area, and the AMG operator of Q1 cells. A triangle
+// numbered clockwise is not an error: GridIn renumbers it, and the run
+// passes the patch test. Duplicated vertices where two blocks of triangles
+// meet are merged (the patch test passes) or, with 'Coincident vertices =
+// reject', named.
 // (The test directory in the messages is printed as <tests>.)
 
 #include "../tests.h"
@@ -77,4 +80,13 @@ main(int argc, char **argv)
   check("second-order triangles", "second_order_triangles.msh");
   check("a triangle without area", "flat_triangle.msh");
   check("a triangle numbered clockwise", "inverted_triangle.msh");
+  check("the AMG operator of Q1 cells on triangles",
+        "distorted_triangles.msh",
+        "subsection Linear solver\n  set Type = gmres\n"
+        "  set AMG operator = Q1 cells\nend\n");
+  check("two blocks of triangles with duplicated vertices, merged",
+        "split_triangles.msh");
+  check("two blocks of triangles with duplicated vertices, rejected",
+        "split_triangles.msh",
+        "subsection Geometry\n  set Coincident vertices = reject\nend\n");
 }
