@@ -310,8 +310,9 @@ namespace pg
     v.fe                     = discretization.field_layout ?
                                  &discretization.field_layout
                 ->fe_collection()[FieldLayout<dim>::fe_cell_index] :
-                                 &discretization.fe;
-    v.fe_scalar              = &discretization.fe_scalar;
+                                 discretization.fe.get();
+    v.fe_scalar              = &discretization.cells.scalar_element();
+    v.cells                  = &discretization.cells;
     v.field_layout           = discretization.field_layout.get();
     v.meshfree               = &discretization.meshfree;
     v.particles              = &discretization.particles;

@@ -48,8 +48,9 @@ namespace pg
                                  const std::vector<types::global_dof_index> &)>
           &add)
       {
-        FEValues<dim>                        fe_values(*view.fe_scalar,
-                                QGauss<dim>(2),
+        FEValues<dim>                        fe_values(view.cells->mapping(),
+                                *view.fe_scalar,
+                                view.cells->quadrature(2),
                                 update_gradients | update_JxW_values);
         QuadratureTable<dim>                 table;
         std::vector<Tensor<1, dim>>          y;

@@ -1,8 +1,8 @@
 #include <pg/assembly/mass_matrix.h>
 #include <pg/base/exceptions.h>
+#include <pg/mesh/linear_cells.h>
 
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <string>
@@ -19,20 +19,21 @@ namespace pg
                   const bool                         consistent,
                   MassMatrices                      &masses)
   {
-    const FE_Q<dim> fe_scalar(1);
-    const IndexSet &owned_dofs     = dof_handler.locally_owned_dofs();
-    const MPI_Comm  comm           = dof_handler.get_communicator();
-    auto           &mass_matrix    = masses.consistent;
-    auto           &condensed_mass = masses.condensed;
-    auto           &lumped_mass    = masses.lumped;
-    auto           &inverse_mass   = masses.inverse;
+    const LinearCells<dim> cells(dof_handler.get_triangulation());
+    const IndexSet        &owned_dofs     = dof_handler.locally_owned_dofs();
+    const MPI_Comm         comm           = dof_handler.get_communicator();
+    auto                  &mass_matrix    = masses.consistent;
+    auto                  &condensed_mass = masses.condensed;
+    auto                  &lumped_mass    = masses.lumped;
+    auto                  &inverse_mass   = masses.inverse;
     // Lumped: every rank sums over all cells (the shared triangulation
     // knows them), so the full vector needs no communication.
     Vector<double> m(dof_handler.n_dofs());
     // the DoFs of the extra nodal fields (pressure, dilatation): no mass
     std::vector<bool>                    massless(dof_handler.n_dofs(), false);
-    FEValues<dim>                        fe_values(fe_scalar,
-                            QGauss<dim>(2),
+    FEValues<dim>                        fe_values(cells.mapping(),
+                            cells.scalar_element(),
+                            cells.quadrature(2),
                             update_values | update_JxW_values);
     std::vector<types::global_dof_index> dofs;
     FullMatrix<double>                   local;
@@ -48,7 +49,8 @@ namespace pg
         fe_values.reinit(
           typename Triangulation<dim>::active_cell_iterator(cell));
         // Components 0 ... dim-1 are the displacement (FieldLayout); for
-        // FE_Q(1) bases the index within the base element is the vertex.
+        // FE_Q(1) and FE_SimplexP(1) bases the index within the base
+        // element is the vertex.
         const FiniteElement<dim> &fe = cell->get_fe();
         dofs.resize(fe.n_dofs_per_cell());
         cell->get_dof_indices(dofs);

@@ -1,5 +1,6 @@
 #include <pg/assembly/particle_loads.h>
 #include <pg/elements/unit_stress_residual.h>
+#include <pg/mesh/linear_cells.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -32,7 +33,6 @@ namespace pg
          formulation.variational_consistency))
     , from_exact_stress(parameters.boundary_conditions.particle_traction_area ==
                         "exact stress")
-    , fe_scalar(1)
     , partial_time(std::numeric_limits<double>::quiet_NaN())
   {}
 
@@ -209,8 +209,11 @@ namespace pg
   {
     if (meshfree_neumann_cells.empty())
       return;
-    FEFaceValues<dim> fe_face_values(fe_scalar,
-                                     QGauss<dim - 1>(2),
+    const LinearCells<dim> cells(
+      meshfree_neumann_cells.front()->get_triangulation());
+    FEFaceValues<dim> fe_face_values(cells.mapping(),
+                                     cells.scalar_element(),
+                                     cells.face_quadrature(2),
                                      update_values | update_quadrature_points |
                                        update_normal_vectors |
                                        update_JxW_values);
@@ -301,8 +304,13 @@ namespace pg
     // add_face_tractions()); and int N_k T dA over the faces of each
     // particle, N_k the Q1 function of its vertex (the particle's share of
     // the face, whose integral is its geometric area |a^k|).
-    FEFaceValues<dim> fe_face_values(fe_scalar,
-                                     QGauss<dim - 1>(2),
+    const LinearCells<dim> cells =
+      neumann_cells.empty() ?
+        LinearCells<dim>() :
+        LinearCells<dim>(neumann_cells.front()->get_triangulation());
+    FEFaceValues<dim> fe_face_values(cells.mapping(),
+                                     cells.scalar_element(),
+                                     cells.face_quadrature(2),
                                      update_values | update_quadrature_points |
                                        update_normal_vectors |
                                        update_JxW_values);

@@ -9,8 +9,61 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <algorithm>
+
 namespace pg
 {
+  namespace
+  {
+    /**
+     * Triangle and tetrahedron meshes run meshfree only (issue 49, first
+     * slice): P1 finite element cells are not built yet, so a simplex mesh
+     * with an FE formulation or with FE cells ('Meshfree region' other
+     * than all) stops here, naming the parameter.
+     */
+    template <int dim>
+    void
+    check_simplex_support(const Parameters::Geometry &geometry,
+                          const FormulationCode      &formulation,
+                          const LinearCells<dim>     &cells,
+                          const std::vector<bool>    &meshfree)
+    {
+      const std::string mesh = "the mesh file " + geometry.file_name +
+                               " ('File name' in subsection 'Geometry') "
+                               "holds " +
+                               cells.name() + ", and ";
+      const std::string recombine =
+        " or recombine the mesh into " +
+        std::string(dim == 2 ? "quadrilaterals" : "hexahedra") +
+        " (Gmsh: 'Mesh.RecombineAll = 1'), where finite element cells are "
+        "Q1.";
+      AssertThrow(
+        formulation.method != FormulationCode::Method::fem,
+        ExcBadParameter("Discretization/Formulation",
+                        formulation.text,
+                        mesh +
+                          "finite element cells on them (P1) are not built "
+                          "yet: pg runs triangle and tetrahedron meshes "
+                          "meshfree only. Choose a PG formulation (e.g. "
+                          "'VCBCPPG V3sn Unl') with 'Meshfree region = all' in "
+                          "subsection 'Geometry'," +
+                          recombine));
+      AssertThrow(
+        std::all_of(meshfree.begin(),
+                    meshfree.end(),
+                    [](const bool b) { return b; }),
+        ExcBadParameter("Geometry/Meshfree region",
+                        geometry.meshfree_region,
+                        mesh +
+                          "finite element cells on them (P1) are not built "
+                          "yet: every cell of a triangle or tetrahedron mesh "
+                          "must be meshfree. Set 'Meshfree region = all'," +
+                          recombine));
+    }
+  } // namespace
+
+
+
   template <int dim>
   Discretization<dim>::Discretization(const MPI_Comm mpi_communicator,
                                       const Parameters::Geometry &geometry)
@@ -19,8 +72,6 @@ namespace pg
                     Triangulation<dim>::none,
                     false,
                     parallel::shared::Triangulation<dim>::partition_metis)
-    , fe(FE_Q<dim>(1), dim)
-    , fe_scalar(1)
   {}
 
 
@@ -56,22 +107,27 @@ namespace pg
     Mesh::create_mesh(geometry, triangulation, &mesh_notes, check_size);
     time_mesh += timer.wall_time();
     timer.restart();
+    cells = LinearCells<dim>(triangulation);
+    fe    = std::make_unique<FESystem<dim>>(cells.scalar_element(), dim);
     const bool fem = (formulation.method == FormulationCode::Method::fem);
     meshfree = fem ? std::vector<bool>(triangulation.n_active_cells(), false) :
                      Mesh::mark_meshfree_cells(geometry, triangulation);
+    if (cells.is_simplex())
+      check_simplex_support(geometry, formulation, cells, meshfree);
 
     dof_handler.reinit(triangulation);
     if (formulation.n_nodal_fields() > 0)
       {
         field_layout =
-          std::make_unique<FieldLayout<dim>>(formulation.n_nodal_fields());
+          std::make_unique<FieldLayout<dim>>(formulation.n_nodal_fields(),
+                                             cells);
         field_layout->distribute_dofs(dof_handler, meshfree);
       }
     else
-      dof_handler.distribute_dofs(fe);
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      Assert(fe.system_to_component_index(i).first == i % dim &&
-               fe.system_to_component_index(i).second == i / dim,
+      dof_handler.distribute_dofs(*fe);
+    for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
+      Assert(fe->system_to_component_index(i).first == i % dim &&
+               fe->system_to_component_index(i).second == i / dim,
              ExcInternalError());
     owned_dofs = dof_handler.locally_owned_dofs();
 

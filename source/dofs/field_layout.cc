@@ -3,34 +3,35 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_nothing.h>
-#include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/tria.h>
 
 namespace pg
 {
   template <int dim>
-  FieldLayout<dim>::FieldLayout(const unsigned int n_extra_fields)
+  FieldLayout<dim>::FieldLayout(const unsigned int      n_extra_fields,
+                                const LinearCells<dim> &cells)
     : n_fields(n_extra_fields)
   {
     AssertThrow(n_extra_fields <= 2,
                 ExcMessage("FieldLayout: at most 2 extra nodal fields "
                            "(pressure, dilatation), not " +
                            std::to_string(n_extra_fields)));
+    const FiniteElement<dim> &p1 = cells.scalar_element();
     if (n_fields == 0)
       // Exactly the element of Problem: the numbering is that of a plain
       // DoFHandler.
-      collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim));
+      collection.push_back(FESystem<dim>(p1, dim));
     else
       {
         // FE_Nothing(dominate = false): no continuity requirement at the
         // interface, so the extra fields of interface vertices stay free.
-        collection.push_back(FESystem<dim>(FE_Q<dim>(1),
-                                           dim,
-                                           FE_Nothing<dim>(1, false),
-                                           n_fields));
         collection.push_back(
-          FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), n_fields));
+          FESystem<dim>(p1,
+                        dim,
+                        FE_Nothing<dim>(cells.reference_cell(), 1, false),
+                        n_fields));
+        collection.push_back(FESystem<dim>(p1, dim, p1, n_fields));
       }
   }
 

@@ -73,7 +73,11 @@ namespace pg
                           Patterns::Anything(),
                           "Mesh file for 'Mesh = file': Gmsh (.msh), Abaqus "
                           "(.inp) or UCD (.ucd), read with deal.II's GridIn. "
-                          "Relative paths start in the working directory.");
+                          "Relative paths start in the working directory. "
+                          "Quadrilaterals (hexahedra), or linear triangles "
+                          "(tetrahedra) with 'Meshfree region = all' and a "
+                          "PG formulation (no FE cells on simplices yet); "
+                          "one kind of cell per mesh.");
         prm.declare_entry(
           "Coincident vertices",
           "merge",

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <map>
@@ -37,6 +38,36 @@ namespace pg
                " given as 'File name' in subsection 'Geometry' cannot be "
                "read: " +
                reason + ". " + hint;
+      }
+
+
+
+      /**
+       * The Gmsh element type N of GridIn's message "The Element Identifier
+       * <N> is not supported", or 0.
+       */
+      unsigned int
+      gmsh_element_type(const std::string &message)
+      {
+        const std::string            key = "Element Identifier <";
+        const std::string::size_type p   = message.find(key);
+        if (p == std::string::npos)
+          return 0;
+        return std::atoi(message.c_str() + p + key.size());
+      }
+
+
+
+      /**
+       * Gmsh's second- and higher-order element types (lines, triangles,
+       * quadrilaterals, tetrahedra, hexahedra, prisms, pyramids of order 2
+       * to 5 and their serendipity forms).
+       */
+      bool
+      is_higher_order(const unsigned int type)
+      {
+        return (type >= 8 && type <= 14) || (type >= 16 && type <= 31) ||
+               (type >= 36 && type <= 39);
       }
 
 
@@ -160,17 +191,21 @@ namespace pg
         // Boundary data of faces (and, in 3-D, edges) that are now interior.
         std::map<std::vector<unsigned int>, unsigned int> face_count;
         for (const CellData<dim> &cell : cells)
-          for (const unsigned int f : GeometryInfo<dim>::face_indices())
-            {
-              std::vector<unsigned int> face;
-              for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_face;
-                   ++v)
-                face.push_back(
-                  cell
-                    .vertices[GeometryInfo<dim>::face_to_cell_vertices(f, v)]);
-              std::sort(face.begin(), face.end());
-              ++face_count[face];
-            }
+          {
+            const ReferenceCell kind =
+              ReferenceCell::n_vertices_to_type(dim, cell.vertices.size());
+            for (const unsigned int f : kind.face_indices())
+              {
+                std::vector<unsigned int> face;
+                for (unsigned int v = 0;
+                     v < kind.face_reference_cell(f).n_vertices();
+                     ++v)
+                  face.push_back(
+                    cell.vertices[kind.face_to_cell_vertices(f, v, 1)]);
+                std::sort(face.begin(), face.end());
+                ++face_count[face];
+              }
+          }
         const auto on_boundary = [&](const auto &face_data) {
           std::vector<unsigned int> face(face_data.vertices.begin(),
                                          face_data.vertices.end());
@@ -199,14 +234,19 @@ namespace pg
                         quads.end());
             std::set<std::pair<unsigned int, unsigned int>> edges;
             for (const CellData<2> &q : quads)
-              for (const unsigned int l : GeometryInfo<2>::face_indices())
-                {
-                  const unsigned int a =
-                    q.vertices[GeometryInfo<2>::face_to_cell_vertices(l, 0)];
-                  const unsigned int b =
-                    q.vertices[GeometryInfo<2>::face_to_cell_vertices(l, 1)];
-                  edges.emplace(std::min(a, b), std::max(a, b));
-                }
+              {
+                // (a quadrilateral or a triangle)
+                const ReferenceCell kind =
+                  ReferenceCell::n_vertices_to_type(2, q.vertices.size());
+                for (const unsigned int l : kind.face_indices())
+                  {
+                    const unsigned int a =
+                      q.vertices[kind.face_to_cell_vertices(l, 0, 1)];
+                    const unsigned int b =
+                      q.vertices[kind.face_to_cell_vertices(l, 1, 1)];
+                    edges.emplace(std::min(a, b), std::max(a, b));
+                  }
+              }
             auto &lines = subcelldata.boundary_lines;
             lines.erase(std::remove_if(lines.begin(),
                                        lines.end(),
@@ -221,15 +261,16 @@ namespace pg
                         lines.end());
           }
 
-        try
-          {
-            GridTools::consistently_order_cells(cells);
-          }
-        catch (const ExceptionBase &)
-          {
-            // 3-D meshes that cannot be ordered: deal.II handles the face
-            // orientations itself
-          }
+        if (triangulation.all_reference_cells_are_hyper_cube())
+          try
+            {
+              GridTools::consistently_order_cells(cells);
+            }
+          catch (const ExceptionBase &)
+            {
+              // 3-D meshes that cannot be ordered: deal.II handles the face
+              // orientations itself
+            }
         triangulation.clear();
         triangulation.create_triangulation(vertices, cells, subcelldata);
 
@@ -291,6 +332,17 @@ namespace pg
       catch (const std::exception &exc)
         {
           reason = "deal.II's GridIn reports: " + user_message(exc);
+          const unsigned int type = gmsh_element_type(reason);
+          AssertThrow(format != GridIn<dim>::msh || !is_higher_order(type),
+                      ExcMessage(unreadable_file_message(
+                        file_name,
+                        "it contains second- or higher-order elements "
+                        "(Gmsh element type " +
+                          std::to_string(type) +
+                          "), and pg reads linear cells only (their "
+                          "vertices are the particles or the Q1 nodes)",
+                        "Mesh it with first-order elements (Gmsh: "
+                        "'Mesh.ElementOrder = 1', or 'gmsh -order 1').")));
         }
       while (!reason.empty() && reason.back() == '.')
         reason.pop_back();
@@ -304,22 +356,28 @@ namespace pg
                     file_name,
                     "it contains no cells of dimension " + std::to_string(dim),
                     contents_hint)));
-      // Q1 cells and the vertices of meshfree cells: quadrilaterals and
-      // hexahedra only (FE_Q on a simplex stops deal.II's DoF numbering)
-      AssertThrow(triangulation.all_reference_cells_are_hyper_cube(),
+      // Quadrilaterals (hexahedra): Q1 elements or meshfree cells;
+      // triangles (tetrahedra): meshfree cells (P1 cells are not built yet,
+      // Discretization refuses them); one kind per mesh
+      const std::string kinds =
+        dim == 2 ? "quadrilaterals or triangles" : "hexahedra or tetrahedra";
+      AssertThrow(triangulation.all_reference_cells_are_hyper_cube() ||
+                    triangulation.all_reference_cells_are_simplex(),
                   ExcMessage(unreadable_file_message(
                     file_name,
                     std::string("it contains ") +
-                      (dim == 2 ? "triangles" :
-                                  "tetrahedra, prisms or pyramids") +
-                      ", and pg's cells are Q1 elements or meshfree cells "
-                      "whose vertices are the particles: " +
-                      (dim == 2 ? "quadrilaterals" : "hexahedra") + " only",
-                    "Recombine the mesh into " +
-                      std::string(dim == 2 ? "quadrilaterals" : "hexahedra") +
-                      " (Gmsh: 'Mesh.RecombineAll = 1' with "
+                      (dim == 2 ? "both quadrilaterals and triangles" :
+                                  "prisms, pyramids or both hexahedra and "
+                                  "tetrahedra") +
+                      ", and pg reads meshes of one kind of cell only: " +
+                      kinds + " (mixed meshes are not supported)",
+                    "Mesh the body with " + kinds +
+                      " alone (Gmsh: 'Mesh.RecombineAll = 1' with "
                       "'Mesh.SubdivisionAlgorithm = " +
-                      (dim == 2 ? "1" : "2") + "').")));
+                      (dim == 2 ? "1" : "2") + "' for " +
+                      (dim == 2 ? "quadrilaterals" : "hexahedra") +
+                      "; no recombination for " +
+                      (dim == 2 ? "triangles" : "tetrahedra") + ").")));
       handle_coincident_vertices(parameters, triangulation, notes);
 
       // A cell without area (volume) has no shape function gradients; the
@@ -327,6 +385,18 @@ namespace pg
       for (const auto &cell : triangulation.active_cell_iterators())
         {
           const double measure = cell->measure();
+          // GridIn renumbers inverted cells of a file; a negative measure
+          // here is a cell it could not fix
+          AssertThrow(measure > -1e-12 * std::pow(cell->diameter(), dim),
+                      ExcMessage(
+                        "Cell " + std::to_string(cell->active_cell_index()) +
+                        " of the mesh file " + file_name +
+                        " (given as 'File name' in subsection 'Geometry'), "
+                        "with its centre at " +
+                        format_point(cell->center()) + ", is inverted: " +
+                        (dim == 2 ? "its area" : "its volume") + " is " +
+                        std::to_string(measure) +
+                        ". Fix the numbering of its vertices in the mesh."));
           AssertThrow(measure > 1e-12 * std::pow(cell->diameter(), dim),
                       ExcMessage(
                         "Cell " + std::to_string(cell->active_cell_index()) +

@@ -523,8 +523,11 @@ namespace pg
           n_coarse_vertices :
           size.n_cells +
             n_coarse_vertices * std::pow(refined, static_cast<double>(dim - 1));
-      size.spacing =
-        std::pow(std::abs(GridTools::volume(coarse)) / size.n_cells, 1. / dim);
+      // (GridTools::volume() integrates with QGauss: hypercubes only)
+      double volume = 0;
+      for (const auto &cell : coarse.active_cell_iterators())
+        volume += cell->measure();
+      size.spacing = std::pow(std::abs(volume) / size.n_cells, 1. / dim);
       return size;
     }
 

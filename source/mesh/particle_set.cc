@@ -1,8 +1,8 @@
 #include <pg/base/exceptions.h>
+#include <pg/mesh/linear_cells.h>
 #include <pg/mesh/particle_set.h>
 
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/tria.h>
 
@@ -151,16 +151,31 @@ namespace pg
         image_indices[k][0] = k;
       }
 
-    // Lumped volumes and boundary area vectors with the scalar Q1 functions:
-    // for FE_Q(1), shape function i belongs to vertex i.
-    const FE_Q<dim>       fe(1);
-    const QGauss<dim>     quadrature(2);
-    const QGauss<dim - 1> face_quadrature(2);
-    FEValues<dim> fe_values(fe, quadrature, update_values | update_JxW_values);
-    FEFaceValues<dim>                        fe_face_values(fe,
+    // Lumped volumes and boundary area vectors with the scalar linear
+    // functions (FE_Q(1) or FE_SimplexP(1): shape function i belongs to
+    // vertex i). A simplex gives 1/(dim+1) of its volume to each vertex, a
+    // simplex face 1/dim of its area vector to each of its vertices.
+    const LinearCells<dim>    cells(tria);
+    const Quadrature<dim>     quadrature      = cells.quadrature(2);
+    const Quadrature<dim - 1> face_quadrature = cells.face_quadrature(2);
+    FEValues<dim>             fe_values(cells.mapping(),
+                            cells.scalar_element(),
+                            quadrature,
+                            update_values | update_JxW_values);
+    FEFaceValues<dim>         fe_face_values(cells.mapping(),
+                                     cells.scalar_element(),
                                      face_quadrature,
                                      update_values | update_JxW_values |
                                        update_normal_vectors);
+    // the vertices of face f of a cell (the others get nothing from it; on
+    // a simplex their shape values on the face are round-off, not zero)
+    const auto on_face =
+      [](const auto &cell, const unsigned int f, const unsigned int i) {
+        for (const unsigned int v : cell->face(f)->vertex_indices())
+          if (cell->face(f)->vertex_index(v) == cell->vertex_index(i))
+            return true;
+        return false;
+      };
     std::vector<unsigned int>                n_edges(n, 0);
     std::vector<std::vector<Tensor<1, dim>>> face_normals(n);
     std::vector<bool> edge_done(tria.n_raw_lines(), false);
@@ -214,12 +229,13 @@ namespace pg
                   typename Triangulation<dim>::active_cell_iterator(cell),
                   f);
                 for (const unsigned int i : cell->vertex_indices())
-                  for (const unsigned int q :
-                       fe_face_values.quadrature_point_indices())
-                    interface_areas[particle_of_vertex[cell->vertex_index(
-                      i)]] += fe_face_values.shape_value(i, q) *
-                              fe_face_values.normal_vector(q) *
-                              fe_face_values.JxW(q);
+                  if (on_face(cell, f, i))
+                    for (const unsigned int q :
+                         fe_face_values.quadrature_point_indices())
+                      interface_areas[particle_of_vertex[cell->vertex_index(
+                        i)]] += fe_face_values.shape_value(i, q) *
+                                fe_face_values.normal_vector(q) *
+                                fe_face_values.JxW(q);
               }
             else if (cell->face(f)->at_boundary() &&
                      !is_mirror_face(cell->face(f)))
@@ -229,21 +245,22 @@ namespace pg
                   f);
                 const types::boundary_id id = cell->face(f)->boundary_id();
                 for (const unsigned int i : cell->vertex_indices())
-                  {
-                    Tensor<1, dim> a;
-                    for (const unsigned int q :
-                         fe_face_values.quadrature_point_indices())
-                      a += fe_face_values.shape_value(i, q) *
-                           fe_face_values.normal_vector(q) *
-                           fe_face_values.JxW(q);
-                    if (a.norm() > 0)
-                      {
-                        const unsigned int k =
-                          particle_of_vertex[cell->vertex_index(i)];
-                        area_vectors[k][id] += a;
-                        face_normals[k].push_back(a / a.norm());
-                      }
-                  }
+                  if (on_face(cell, f, i))
+                    {
+                      Tensor<1, dim> a;
+                      for (const unsigned int q :
+                           fe_face_values.quadrature_point_indices())
+                        a += fe_face_values.shape_value(i, q) *
+                             fe_face_values.normal_vector(q) *
+                             fe_face_values.JxW(q);
+                      if (a.norm() > 0)
+                        {
+                          const unsigned int k =
+                            particle_of_vertex[cell->vertex_index(i)];
+                          area_vectors[k][id] += a;
+                          face_normals[k].push_back(a / a.norm());
+                        }
+                    }
               }
         }
 

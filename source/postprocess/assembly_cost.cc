@@ -25,8 +25,9 @@ namespace pg
         {
           // every Q1 cell has the same table size; the FEValues of the
           // assembly (Gauss 2)
-          FEValues<dim>        fe_values(*view.fe_scalar,
-                                  QGauss<dim>(2),
+          FEValues<dim>        fe_values(view.cells->mapping(),
+                                  *view.fe_scalar,
+                                  view.cells->quadrature(2),
                                   update_gradients | update_values |
                                     update_quadrature_points |
                                     update_JxW_values);

@@ -100,8 +100,9 @@ namespace pg
       field.cell_pressure.reinit(triangulation.n_active_cells());
       field.cell_dilatation.reinit(triangulation.n_active_cells());
       // Q1P0/H1P0 cells: P0 on the cell's Gauss points
-      FEValues<dim>                        fe_values(*view.fe_scalar,
-                              QGauss<dim>(2),
+      FEValues<dim>                        fe_values(view.cells->mapping(),
+                              *view.fe_scalar,
+                              view.cells->quadrature(2),
                               update_gradients | update_JxW_values);
       QuadratureTable<dim>                 table;
       std::vector<types::global_dof_index> dofs(view.fe->n_dofs_per_cell());

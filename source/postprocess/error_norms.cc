@@ -57,8 +57,9 @@ namespace pg
       const auto energy = [&A0](const Tensor<2, dim> &G) {
         return scalar_product(G, double_contract<2, 0, 3, 1>(A0, G));
       };
-      const QGauss<dim>                quadrature(3);
-      FEValues<dim>                    fe_values(*view.fe,
+      const Quadrature<dim>            quadrature = view.cells->quadrature(3);
+      FEValues<dim>                    fe_values(view.cells->mapping(),
+                              *view.fe,
                               quadrature,
                               update_values | update_gradients |
                                 update_quadrature_points | update_JxW_values);

@@ -54,13 +54,21 @@ namespace pg
       const unsigned int        n_vertices = triangulation.n_vertices();
       std::vector<Tensor<2, 3>> fe_stress(n_vertices);
       std::vector<unsigned int> fe_cells(n_vertices, 0);
-      // QTrapezoid's points are the vertices in deal.II's numbering. At the
+      // The nodal quadrature's points are the vertices in deal.II's
+      // numbering (QTrapezoid on hypercubes). At the
       // corner of a strongly distorted cell F can be inverted although it
       // is not at the Gauss points the solution was computed with: there
       // the cell contributes its centre's stress (and nothing if F is
       // inverted at the centre too).
-      FEValues<dim> fe_values(*view.fe, QTrapezoid<dim>(), update_gradients);
-      FEValues<dim> centre_values(*view.fe, QMidpoint<dim>(), update_gradients);
+      const ReferenceCell        &kind = view.cells->reference_cell();
+      FEValues<dim>               fe_values(view.cells->mapping(),
+                              *view.fe,
+                              kind.get_nodal_type_quadrature<dim>(),
+                              update_gradients);
+      FEValues<dim>               centre_values(view.cells->mapping(),
+                                  *view.fe,
+                                  kind.get_midpoint_quadrature<dim>(),
+                                  update_gradients);
       std::vector<Tensor<2, dim>> gradients(fe_values.n_quadrature_points),
         centre_gradient(1);
       unsigned int n_centre = 0, n_skipped = 0;

@@ -1,7 +1,7 @@
 #include <pg/base/exceptions.h>
+#include <pg/mesh/linear_cells.h>
 #include <pg/postprocess/sample_locations.h>
 
-#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
 
 namespace pg
@@ -15,7 +15,8 @@ namespace pg
       const DoFHandler<dim> &dof_handler,
       const std::vector<std::pair<std::string, std::vector<double>>> &points)
     {
-      const MappingQ1<dim> mapping;
+      const Mapping<dim> &mapping =
+        LinearCells<dim>(dof_handler.get_triangulation()).mapping();
       std::vector<
         std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>
         locations;
@@ -55,7 +56,8 @@ namespace pg
                         const std::vector<Parameters::Output::Line> &lines,
                         const unsigned int                           n_samples)
     {
-      const MappingQ1<dim>                 mapping;
+      const Mapping<dim> &mapping =
+        LinearCells<dim>(dof_handler.get_triangulation()).mapping();
       std::vector<LineSampleLocation<dim>> locations;
       for (unsigned int l = 0; l < lines.size(); ++l)
         {

@@ -158,7 +158,8 @@ namespace pg
           data_out.add_data_vector(pressure->cell_dilatation,
                                    "condensed_dilatation");
         }
-      data_out.build_patches();
+      // (MappingFE on triangles and tetrahedra)
+      data_out.build_patches(view.cells->mapping());
       const std::string cells =
         data_out.write_vtu_with_pvtu_record(dir, "solution", step, comm, 4);
       // finalize() writes the last step again: one record per file

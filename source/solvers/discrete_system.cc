@@ -625,14 +625,26 @@ namespace pg
     const bool         weak_u1_modes =
       formulation.points == FormulationCode::Points::u1 &&
       !formulation.implicit_gradients;
+    // (Q1 cells need quadrilaterals or hexahedra: on triangles and
+    // tetrahedra 'automatic' takes the tangent, and 'Q1 cells' is refused)
+    const bool simplex = discretization.cells.is_simplex();
     const bool suits_automatic =
       discretization.dof_handler.n_dofs() >= 10000 &&
       condensed_pressure == nullptr && !weak_u1_modes &&
-      formulation.method != FormulationCode::Method::cpd;
+      formulation.method != FormulationCode::Method::cpd && !simplex;
     if (choice == "tangent" || prm.linear_solver.type == "direct" ||
         discretization.particles.n_particles() == 0 ||
         (choice == "automatic" && !suits_automatic))
       return;
+    AssertThrow(
+      !simplex,
+      ExcBadParameter("Linear solver/AMG operator",
+                      choice,
+                      "the mesh holds " + discretization.cells.name() +
+                        ", and the operator's Q1 cells need quadrilaterals or "
+                        "hexahedra (P1 cells are not built yet). Set 'AMG "
+                        "operator = tangent' (or automatic, which takes the "
+                        "tangent on triangle and tetrahedron meshes)."));
     for (const auto &cell : discretization.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         owned_cells.push_back(cell);

@@ -188,8 +188,6 @@ namespace pg
     const ParticleForce              exact_stress_force;
     const bool                       from_test_functions;
     const bool                       from_exact_stress;
-    /** The scalar Q1 element of the face quadrature. */
-    const FE_Q<dim> fe_scalar;
 
     std::vector<Tensor<1, dim>>                       unit_stress_residual;
     std::vector<std::map<types::boundary_id, double>> area_weights;

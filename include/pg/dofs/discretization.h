@@ -11,13 +11,13 @@
 #include <pg/elements/quadrature_table.h>
 #include <pg/families/family_set.h>
 #include <pg/mesh/geometry_parameters.h>
+#include <pg/mesh/linear_cells.h>
 #include <pg/mesh/particle_set.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 
 #include <functional>
@@ -83,15 +83,21 @@ namespace pg
 
     parallel::shared::Triangulation<dim> triangulation;
     /**
-     * FESystem(FE_Q(1), dim) of the displacement and its FE_Q(1). With extra
+     * The kind of the mesh's cells (quadrilaterals/hexahedra or
+     * triangles/tetrahedra): the scalar linear element, mapping and
+     * quadratures. Set by reinit() once the mesh is built.
+     */
+    LinearCells<dim> cells;
+    /**
+     * FESystem(P, dim) of the displacement, P = cells.scalar_element()
+     * (FE_Q(1) or FE_SimplexP(1)); made by reinit(). With extra
      * nodal fields (U2P1C, Unl+P1C) the DoFHandler is an hp one
      * (#field_layout): its FE cells have fe's DoFs (and FE_Nothing for the
-     * fields), its meshfree cells FESystem(FE_Q(1)^dim, FE_Q(1)^2); use
+     * fields), its meshfree cells FESystem(P^dim, P^2); use
      * cell->get_fe() there, and fe only on FE cells.
      */
-    const FESystem<dim> fe;
-    const FE_Q<dim>     fe_scalar;
-    DoFHandler<dim>     dof_handler;
+    std::unique_ptr<const FESystem<dim>> fe;
+    DoFHandler<dim>                      dof_handler;
     /**
      * The layout of u and the extra nodal fields (null without extra
      * fields, where dof_handler has fe on every cell).

@@ -2,6 +2,7 @@
 #define pg_dofs_field_layout_h
 
 #include <pg/base/global.h>
+#include <pg/mesh/linear_cells.h>
 
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -44,8 +45,13 @@ namespace pg
     /** FE index of the meshfree cells (used only with extra fields). */
     static constexpr unsigned int meshfree_cell_index = 1;
 
-    /** The collection for @p n_extra_fields extra scalar fields (0, 1, 2). */
-    explicit FieldLayout(const unsigned int n_extra_fields);
+    /**
+     * The collection for @p n_extra_fields extra scalar fields (0, 1, 2) on
+     * cells of the kind of @p cells: FE_Q(1) above stands for its scalar
+     * element (FE_SimplexP(1) on triangles and tetrahedra).
+     */
+    explicit FieldLayout(const unsigned int      n_extra_fields,
+                         const LinearCells<dim> &cells = LinearCells<dim>());
 
     /**
      * Set the active FE indices of @p dof_handler (already reinit'ed on its

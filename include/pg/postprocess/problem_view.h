@@ -10,6 +10,7 @@
 #include <pg/elements/quadrature_table.h>
 #include <pg/families/family_set.h>
 #include <pg/materials/material.h>
+#include <pg/mesh/linear_cells.h>
 #include <pg/mesh/particle_set.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -89,6 +90,8 @@ namespace pg
        * Meshfree cells may have another element: use cell->get_fe() there.
        */
       const FiniteElement<dim> *fe = nullptr, *fe_scalar = nullptr;
+      /** The kind of the cells: their mapping and quadratures. */
+      const LinearCells<dim> *cells = nullptr;
       /**
        * The layout of u and the extra nodal fields (U2P1C, Unl+P1C,
        * IUnlP0); null without extra fields.
