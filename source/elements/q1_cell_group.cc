@@ -27,8 +27,9 @@ namespace pg
                          update_values | update_quadrature_points |
                            update_normal_vectors | update_JxW_values)
       {
-        // the body force on P1 cells: two points per direction, as on Q1
-        // cells (exact for a linear force)
+        // the body force on P1 cells: QGaussSimplex(2), exact for a
+        // linear force times the linear shape functions (as QGauss(2) on
+        // Q1 cells)
         if (kind.is_simplex())
           load_values =
             std::make_unique<FEValues<dim>>(kind.mapping(),
