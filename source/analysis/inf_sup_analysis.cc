@@ -50,7 +50,7 @@ namespace pg
       {
         FEValues<dim>                        fe_values(view.cells->mapping(),
                                 *view.fe_scalar,
-                                view.cells->quadrature(2),
+                                view.cells->fe_cell_quadrature(),
                                 update_gradients | update_JxW_values);
         QuadratureTable<dim>                 table;
         std::vector<Tensor<1, dim>>          y;

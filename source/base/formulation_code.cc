@@ -20,8 +20,9 @@ namespace pg
       "off. E.g. 'VCPPG V3sn Unl' (= 'VCBCPPG V3sn Unl TL'), 'VCPBG Unl' "
       "(= 'VCBCPBG V5sn Unl TL'), 'PBG Unl noBC', 'PBG U1', "
       "'VC2PPG V1s U2', 'VCPPG V3sn UnlP0', 'VCPBG U2P1', 'VCPBG U1SUnl', "
-      "'VCPBG U1SIG', 'VCPBG Unl+P1C'; or 'FEM' (Q1/H1), 'FEM Q1P0' (H1P0 in 3-D) or "
-      "'CPD'.";
+      "'VCPBG U1SIG', 'VCPBG Unl+P1C'; or 'FEM' (Q1/H1; P1 on triangle "
+      "and tetrahedron meshes), 'FEM Q1P0' (H1P0 in 3-D; not on triangles "
+      "and tetrahedra, where it would be P1-P0, which locks) or 'CPD'.";
 
 
 

@@ -16,10 +16,11 @@ namespace pg
   namespace
   {
     /**
-     * Triangle and tetrahedron meshes run meshfree only (issue 49, first
-     * slice): P1 finite element cells are not built yet, so a simplex mesh
-     * with an FE formulation or with FE cells ('Meshfree region' other
-     * than all) stops here, naming the parameter.
+     * Finite element cells on triangles and tetrahedra are P1 (issue 49):
+     * the mixed codes' cells would be P1-P0 (one pressure per simplex),
+     * which locks, so a mixed formulation with finite element cells on a
+     * simplex mesh (FEM Q1P0, or a mixed PG code with a 'Meshfree region'
+     * other than all) stops here, naming the parameter.
      */
     template <int dim>
     void
@@ -28,37 +29,44 @@ namespace pg
                           const LinearCells<dim>     &cells,
                           const std::vector<bool>    &meshfree)
     {
+      if (!formulation.mixed() || std::all_of(meshfree.begin(),
+                                              meshfree.end(),
+                                              [](const bool b) { return b; }))
+        return;
       const std::string mesh = "the mesh file " + geometry.file_name +
                                " ('File name' in subsection 'Geometry') "
                                "holds " +
                                cells.name() + ", and ";
+      const std::string locks =
+        "the mixed finite element cells on them would be P1-P0 (a constant "
+        "pressure per " +
+        std::string(dim == 2 ? "triangle" : "tetrahedron") +
+        "), which locks: pg does not build them. ";
       const std::string recombine =
-        " or recombine the mesh into " +
+        "or recombine the mesh into " +
         std::string(dim == 2 ? "quadrilaterals" : "hexahedra") +
-        " (Gmsh: 'Mesh.RecombineAll = 1'), where finite element cells are "
-        "Q1.";
-      AssertThrow(
-        formulation.method != FormulationCode::Method::fem,
-        ExcBadParameter("Discretization/Formulation",
-                        formulation.text,
-                        mesh +
-                          "finite element cells on them (P1) are not built "
-                          "yet: pg runs triangle and tetrahedron meshes "
-                          "meshfree only. Choose a PG formulation (e.g. "
-                          "'VCBCPPG V3sn Unl') with 'Meshfree region = all' in "
-                          "subsection 'Geometry'," +
-                          recombine));
-      AssertThrow(
-        std::all_of(meshfree.begin(),
-                    meshfree.end(),
-                    [](const bool b) { return b; }),
-        ExcBadParameter("Geometry/Meshfree region",
-                        geometry.meshfree_region,
-                        mesh +
-                          "finite element cells on them (P1) are not built "
-                          "yet: every cell of a triangle or tetrahedron mesh "
-                          "must be meshfree. Set 'Meshfree region = all'," +
-                          recombine));
+        " (Gmsh: 'Mesh.RecombineAll = 1'), where the mixed cells are " +
+        std::string(dim == 2 ? "Q1P0." : "H1P0.");
+      AssertThrow(formulation.method != FormulationCode::Method::fem,
+                  ExcBadParameter("Discretization/Formulation",
+                                  formulation.text,
+                                  mesh + locks +
+                                    "Choose 'FEM' (P1 cells), a mixed PG "
+                                    "formulation (e.g. 'VCBCPBG V5sn UnlP0') "
+                                    "with 'Meshfree region = all' in "
+                                    "subsection 'Geometry', " +
+                                    recombine));
+      AssertThrow(false,
+                  ExcBadParameter("Geometry/Meshfree region",
+                                  geometry.meshfree_region,
+                                  mesh + locks + "The mixed formulation '" +
+                                    formulation.text +
+                                    "' ('Formulation' in subsection "
+                                    "'Discretization') runs on this mesh "
+                                    "with 'Meshfree region = all'; couple a "
+                                    "displacement formulation (e.g. "
+                                    "'VCBCPBG V5sn Unl') to P1 cells, " +
+                                    recombine));
     }
   } // namespace
 

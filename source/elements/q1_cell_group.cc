@@ -14,27 +14,44 @@ namespace pg
     template <int dim>
     struct Q1Scratch : public GroupScratch
     {
-      explicit Q1Scratch(const FiniteElement<dim> &fe_scalar)
-        : fe_values(fe_scalar,
-                    QGauss<dim>(2),
+      explicit Q1Scratch(const LinearCells<dim> &kind)
+        : kind(kind)
+        , fe_values(kind.mapping(),
+                    kind.scalar_element(),
+                    kind.fe_cell_quadrature(),
                     update_gradients | update_values |
                       update_quadrature_points | update_JxW_values)
-        , fe_face_values(fe_scalar,
-                         QGauss<dim - 1>(2),
+        , fe_face_values(kind.mapping(),
+                         kind.scalar_element(),
+                         kind.face_quadrature(2),
                          update_values | update_quadrature_points |
                            update_normal_vectors | update_JxW_values)
-      {}
+      {
+        // the body force on P1 cells: QGaussSimplex(2), exact for a
+        // linear force times the linear shape functions (as QGauss(2) on
+        // Q1 cells)
+        if (kind.is_simplex())
+          load_values =
+            std::make_unique<FEValues<dim>>(kind.mapping(),
+                                            kind.scalar_element(),
+                                            kind.quadrature(2),
+                                            update_values |
+                                              update_quadrature_points |
+                                              update_JxW_values);
+      }
 
       std::unique_ptr<GroupScratch>
       clone() const override
       {
-        return std::make_unique<Q1Scratch>(fe_values.get_fe());
+        return std::make_unique<Q1Scratch>(kind);
       }
 
-      FEValues<dim>               fe_values;
-      FEFaceValues<dim>           fe_face_values;
-      QuadratureTable<dim>        table;
-      std::vector<Tensor<1, dim>> y;
+      const LinearCells<dim>         kind;
+      FEValues<dim>                  fe_values;
+      std::unique_ptr<FEValues<dim>> load_values;
+      FEFaceValues<dim>              fe_face_values;
+      QuadratureTable<dim>           table;
+      std::vector<Tensor<1, dim>>    y;
     };
   } // namespace
 
@@ -43,14 +60,16 @@ namespace pg
   template <int dim>
   Q1CellGroup<dim>::Q1CellGroup(
     const std::vector<CellIterator>       &cells,
+    const LinearCells<dim>                &kind,
     const Materials::Material<dim>        &material,
     const Loads<dim>                      &loads,
     const Materials::VolumetricSplit<dim> *condensed_pressure)
     : cells(cells)
+    , kind(kind)
     , material(material)
     , loads(loads)
     , condensed_pressure(condensed_pressure)
-    , fe_scalar(1)
+    , n_points(kind.fe_cell_quadrature().size())
   {}
 
 
@@ -59,6 +78,8 @@ namespace pg
   std::string
   Q1CellGroup<dim>::name() const
   {
+    if (kind.is_simplex())
+      return condensed_pressure == nullptr ? "P1 cells" : "P1P0 cells";
     if (condensed_pressure == nullptr)
       return "Q1 cells";
     return dim == 2 ? "Q1P0 cells" : "H1P0 cells";
@@ -91,7 +112,7 @@ namespace pg
   unsigned int
   Q1CellGroup<dim>::n_evaluation_points(const unsigned int) const
   {
-    return 1u << dim;
+    return n_points;
   }
 
 
@@ -100,7 +121,7 @@ namespace pg
   std::unique_ptr<GroupScratch>
   Q1CellGroup<dim>::create_scratch() const
   {
-    return std::make_unique<Q1Scratch<dim>>(fe_scalar);
+    return std::make_unique<Q1Scratch<dim>>(kind);
   }
 
 
@@ -145,7 +166,14 @@ namespace pg
                        local.with_matrix ? &local.matrix : nullptr,
                        history.committed,
                        history.trial);
-    loads.add_body_force(scratch.fe_values, local.residual);
+    if (scratch.load_values != nullptr)
+      {
+        scratch.load_values->reinit(
+          typename Triangulation<dim>::active_cell_iterator(cell));
+        loads.add_body_force(*scratch.load_values, local.residual);
+      }
+    else
+      loads.add_body_force(scratch.fe_values, local.residual);
     loads.add_face_tractions(cell, scratch.fe_face_values, local.residual);
   }
 
@@ -155,7 +183,8 @@ namespace pg
   std::string
   Q1CellGroup<dim>::element_name(const unsigned int e) const
   {
-    return "Q1 cell " + std::to_string(cells[e]->active_cell_index());
+    return (kind.is_simplex() ? "P1 cell " : "Q1 cell ") +
+           std::to_string(cells[e]->active_cell_index());
   }
 
 

@@ -74,10 +74,10 @@ namespace pg
                           "Mesh file for 'Mesh = file': Gmsh (.msh), Abaqus "
                           "(.inp) or UCD (.ucd), read with deal.II's GridIn. "
                           "Relative paths start in the working directory. "
-                          "Quadrilaterals (hexahedra), or linear triangles "
-                          "(tetrahedra) with 'Meshfree region = all' and a "
-                          "PG formulation (no FE cells on simplices yet); "
-                          "one kind of cell per mesh.");
+                          "Quadrilaterals (hexahedra; FE cells are Q1), or "
+                          "linear triangles (tetrahedra; FE cells are P1, "
+                          "the mixed codes' FE cells are refused: P1-P0 "
+                          "locks); one kind of cell per mesh.");
         prm.declare_entry(
           "Coincident vertices",
           "merge",

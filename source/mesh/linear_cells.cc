@@ -78,6 +78,15 @@ namespace pg
 
 
   template <int dim>
+  Quadrature<dim>
+  LinearCells<dim>::fe_cell_quadrature() const
+  {
+    return quadrature(kind.is_simplex() ? 1 : 2);
+  }
+
+
+
+  template <int dim>
   Quadrature<dim - 1>
   LinearCells<dim>::face_quadrature(const unsigned int n) const
   {

@@ -357,8 +357,8 @@ namespace pg
                     "it contains no cells of dimension " + std::to_string(dim),
                     contents_hint)));
       // Quadrilaterals (hexahedra): Q1 elements or meshfree cells;
-      // triangles (tetrahedra): meshfree cells (P1 cells are not built yet,
-      // Discretization refuses them); one kind per mesh
+      // triangles (tetrahedra): P1 elements or meshfree cells; one kind per
+      // mesh
       const std::string kinds =
         dim == 2 ? "quadrilaterals or triangles" : "hexahedra or tetrahedra";
       AssertThrow(triangulation.all_reference_cells_are_hyper_cube() ||

@@ -23,11 +23,11 @@ namespace pg
       const auto &owned_fe_cells = *view.owned_fe_cells;
       if (!owned_fe_cells.empty())
         {
-          // every Q1 cell has the same table size; the FEValues of the
-          // assembly (Gauss 2)
+          // every FE cell has the same table size; the FEValues of the
+          // assembly (LinearCells::fe_cell_quadrature())
           FEValues<dim>        fe_values(view.cells->mapping(),
                                   *view.fe_scalar,
-                                  view.cells->quadrature(2),
+                                  view.cells->fe_cell_quadrature(),
                                   update_gradients | update_values |
                                     update_quadrature_points |
                                     update_JxW_values);

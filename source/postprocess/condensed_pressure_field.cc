@@ -102,7 +102,7 @@ namespace pg
       // Q1P0/H1P0 cells: P0 on the cell's Gauss points
       FEValues<dim>                        fe_values(view.cells->mapping(),
                               *view.fe_scalar,
-                              view.cells->quadrature(2),
+                              view.cells->fe_cell_quadrature(),
                               update_gradients | update_JxW_values);
       QuadratureTable<dim>                 table;
       std::vector<types::global_dof_index> dofs(view.fe->n_dofs_per_cell());

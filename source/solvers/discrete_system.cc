@@ -127,6 +127,7 @@ namespace pg
         AssertThrow(condensed_pressure != nullptr, ExcInternalError());
       }
     q1_cells = std::make_unique<Q1CellGroup<dim>>(discretization.owned_fe_cells,
+                                                  discretization.cells,
                                                   material,
                                                   loads,
                                                   condensed_pressure);
@@ -625,8 +626,9 @@ namespace pg
     const bool         weak_u1_modes =
       formulation.points == FormulationCode::Points::u1 &&
       !formulation.implicit_gradients;
-    // (Q1 cells need quadrilaterals or hexahedra: on triangles and
-    // tetrahedra 'automatic' takes the tangent, and 'Q1 cells' is refused)
+    // (on triangles and tetrahedra 'Q1 cells' are P1 cells, whose hierarchy
+    // needed 4 to 8 times the tangent's iterations: 'automatic' takes the
+    // tangent there)
     const bool simplex = discretization.cells.is_simplex();
     const bool suits_automatic =
       discretization.dof_handler.n_dofs() >= 10000 &&
@@ -636,19 +638,11 @@ namespace pg
         discretization.particles.n_particles() == 0 ||
         (choice == "automatic" && !suits_automatic))
       return;
-    AssertThrow(
-      !simplex,
-      ExcBadParameter("Linear solver/AMG operator",
-                      choice,
-                      "the mesh holds " + discretization.cells.name() +
-                        ", and the operator's Q1 cells need quadrilaterals or "
-                        "hexahedra (P1 cells are not built yet). Set 'AMG "
-                        "operator = tangent' (or automatic, which takes the "
-                        "tangent on triangle and tetrahedron meshes)."));
     for (const auto &cell : discretization.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         owned_cells.push_back(cell);
     amg_cells = std::make_unique<Q1CellGroup<dim>>(owned_cells,
+                                                   discretization.cells,
                                                    material,
                                                    loads,
                                                    condensed_pressure);

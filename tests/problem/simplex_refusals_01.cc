@@ -1,14 +1,15 @@
-// What triangle and tetrahedron meshes do not run yet (issue 49, first
-// slice: meshfree only) stops with a message that names the parameter (or
-// the cell and its position) and says what to do: finite element cells on
-// a simplex mesh (a FEM formulation, a 'Meshfree region' other than all),
-// a mesh of triangles and quadrilaterals, second-order triangles, a
-// triangle without area, and the AMG operator of Q1 cells. A triangle
-// numbered clockwise is not an error: GridIn renumbers it, and the run
-// passes the patch test. Duplicated vertices where two blocks of triangles
-// meet are merged (the patch test passes) or, with 'Coincident vertices =
-// reject', named.
-// (The test directory in the messages is printed as <tests>.)
+// What triangle and tetrahedron meshes do not run (issue 49) stops with a
+// message that names the parameter (or the cell and its position) and says
+// what to do: mixed finite element cells on a simplex mesh (FEM Q1P0, a
+// mixed PG code with a 'Meshfree region' other than all: P1-P0 locks), a
+// mesh of triangles and quadrilaterals, second-order triangles, a triangle
+// without area. P1 cells (FEM, or coupled to a PG displacement code) and
+// the AMG operator of 'Q1 cells' (P1 cells here; GMRES to 1e-13) run and
+// pass the patch test. A triangle numbered clockwise is not an error: GridIn
+// renumbers it, and the run passes the patch test. Duplicated vertices where
+// two blocks of triangles meet are merged (the patch test passes) or, with
+// 'Coincident vertices = reject', named. (The test directory in the messages is
+// printed as <tests>.)
 
 #include "../tests.h"
 #include "problem_fixture.h"
@@ -75,15 +76,27 @@ main(int argc, char **argv)
         "distorted_triangles.msh",
         "subsection Geometry\n  set Meshfree region = box 0, -1.1 : 1.1, "
         "1.1\nend\n");
+  check("FEM Q1P0 on triangles",
+        "distorted_triangles.msh",
+        "subsection Discretization\n  set Formulation = FEM Q1P0\nend\n");
+  for (const std::string code :
+       {"VCBCPBG V5sn UnlP0", "VCPBG V5sn U2P1", "VCBCPBG V5sn Unl+P1C"})
+    check(code + " beside P1 cells on triangles",
+          "distorted_triangles.msh",
+          "subsection Discretization\n  set Formulation = " + code +
+            "\nend\n"
+            "subsection Geometry\n  set Meshfree region = box 0, -1.1 : "
+            "1.1, 1.1\nend\n");
   check("triangles and quadrilaterals in one mesh",
         "mixed_triangles_quads.msh");
   check("second-order triangles", "second_order_triangles.msh");
   check("a triangle without area", "flat_triangle.msh");
   check("a triangle numbered clockwise", "inverted_triangle.msh");
-  check("the AMG operator of Q1 cells on triangles",
+  check("the AMG operator of Q1 (here P1) cells on triangles",
         "distorted_triangles.msh",
         "subsection Linear solver\n  set Type = gmres\n"
-        "  set AMG operator = Q1 cells\nend\n");
+        "  set AMG operator = Q1 cells\n  set Tolerance = 1e-13\nend\n"
+        "subsection Newton\n  set Relative tolerance = 1e-13\nend\n");
   check("two blocks of triangles with duplicated vertices, merged",
         "split_triangles.msh");
   check("two blocks of triangles with duplicated vertices, rejected",

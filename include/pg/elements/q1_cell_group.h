@@ -5,18 +5,22 @@
 #include <pg/elements/element_group.h>
 #include <pg/materials/material.h>
 #include <pg/materials/volumetric_split.h>
+#include <pg/mesh/linear_cells.h>
 
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_q.h>
 
 #include <vector>
 
 namespace pg
 {
   /**
-   * The Q1 finite element cells of this rank: 2^dim Gauss points, the
-   * common kernel (assemble_element) on a Q1 quadrature table, plus the
-   * body force and the FE-consistent traction of their Neumann faces.
+   * The linear finite element cells of this rank, of the kind of
+   * @p kind: Q1 quadrilaterals/hexahedra with 2^dim Gauss points, or P1
+   * triangles/tetrahedra with one point (their gradient is constant, so
+   * one point integrates the internal force and tangent of any material
+   * exactly). The common kernel (assemble_element) on the cell's
+   * quadrature table, plus the body force (QGaussSimplex(2) on P1 cells)
+   * and the FE-consistent traction of their Neumann faces.
    */
   template <int dim>
   class Q1CellGroup : public ElementGroup<dim>
@@ -31,6 +35,7 @@ namespace pg
      */
     Q1CellGroup(
       const std::vector<CellIterator>       &cells,
+      const LinearCells<dim>                &kind,
       const Materials::Material<dim>        &material,
       const Loads<dim>                      &loads,
       const Materials::VolumetricSplit<dim> *condensed_pressure = nullptr);
@@ -69,10 +74,12 @@ namespace pg
 
   private:
     const std::vector<CellIterator>       &cells;
+    const LinearCells<dim>                 kind;
     const Materials::Material<dim>        &material;
     const Loads<dim>                      &loads;
     const Materials::VolumetricSplit<dim> *condensed_pressure;
-    const FE_Q<dim>                        fe_scalar;
+    /** The number of Gauss points of a cell (2^dim, or 1 on P1 cells). */
+    const unsigned int n_points;
   };
 } // namespace pg
 

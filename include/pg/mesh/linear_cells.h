@@ -59,6 +59,14 @@ namespace pg
     Quadrature<dim>
     quadrature(const unsigned int n) const;
 
+    /**
+     * The rule of a finite element cell's internal force and tangent:
+     * QGauss(2) on Q1 cells, QGaussSimplex(1) on P1 cells (their gradient
+     * is constant: one point is exact for any material).
+     */
+    Quadrature<dim>
+    fe_cell_quadrature() const;
+
     /** The same rule on a face (all faces of a cell are of one kind). */
     Quadrature<dim - 1>
     face_quadrature(const unsigned int n) const;
