@@ -385,25 +385,25 @@ namespace pg
       for (const auto &cell : triangulation.active_cell_iterators())
         {
           const double measure = cell->measure();
+          // the start of both messages (built only when one is thrown)
+          const auto this_cell = [&]() {
+            return "Cell " + std::to_string(cell->active_cell_index()) +
+                   " of the mesh file " + file_name +
+                   " (given as 'File name' in subsection 'Geometry'), "
+                   "with its centre at " +
+                   format_point(cell->center());
+          };
           // GridIn renumbers inverted cells of a file; a negative measure
           // here is a cell it could not fix
           AssertThrow(measure > -1e-12 * std::pow(cell->diameter(), dim),
                       ExcMessage(
-                        "Cell " + std::to_string(cell->active_cell_index()) +
-                        " of the mesh file " + file_name +
-                        " (given as 'File name' in subsection 'Geometry'), "
-                        "with its centre at " +
-                        format_point(cell->center()) + ", is inverted: " +
+                        this_cell() + ", is inverted: " +
                         (dim == 2 ? "its area" : "its volume") + " is " +
                         std::to_string(measure) +
                         ". Fix the numbering of its vertices in the mesh."));
           AssertThrow(measure > 1e-12 * std::pow(cell->diameter(), dim),
                       ExcMessage(
-                        "Cell " + std::to_string(cell->active_cell_index()) +
-                        " of the mesh file " + file_name +
-                        " (given as 'File name' in subsection 'Geometry'), "
-                        "with its centre at " +
-                        format_point(cell->center()) + ", has " +
+                        this_cell() + ", has " +
                         (dim == 2 ? "an area" : "a volume") + " of " +
                         std::to_string(measure) + ": its vertices lie " +
                         (dim == 2 ? "on a line" : "in a plane") +

@@ -10,8 +10,10 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 /** The text of the file @p name (a parameter file of prm/). */
 inline std::string
@@ -22,6 +24,32 @@ read_file(const std::string &name)
   text << file.rdbuf();
   return text.str();
 }
+
+/** The columns of a run's statistics.txt by name (without the wall time). */
+inline std::map<std::string, std::vector<double>>
+read_statistics(const std::string &file_name)
+{
+  std::ifstream                              file(file_name);
+  std::vector<std::string>                   names;
+  std::map<std::string, std::vector<double>> columns;
+  std::string                                line;
+  while (std::getline(file, line))
+    {
+      if (line.rfind("# ", 0) == 0)
+        {
+          names.push_back(line.substr(line.find(':') + 2));
+          continue;
+        }
+      std::istringstream values(line);
+      double             v;
+      for (unsigned int c = 0; values >> v && c < names.size(); ++c)
+        if (names[c] != "wall time")
+          columns[names[c]].push_back(v);
+    }
+  return columns;
+}
+
+
 
 /** Run the parameters @p parameters (with @p restart: pg_solve --restart). */
 template <int dim>

@@ -16,30 +16,6 @@
 
 namespace
 {
-  /** The columns of statistics.txt by name (without the wall time). */
-  std::map<std::string, std::vector<double>>
-  read_statistics(const std::string &file_name)
-  {
-    std::ifstream                              file(file_name);
-    std::vector<std::string>                   names;
-    std::map<std::string, std::vector<double>> columns;
-    std::string                                line;
-    while (std::getline(file, line))
-      {
-        if (line.rfind("# ", 0) == 0)
-          {
-            names.push_back(line.substr(line.find(':') + 2));
-            continue;
-          }
-        std::istringstream values(line);
-        double             v;
-        for (unsigned int c = 0; values >> v && c < names.size(); ++c)
-          if (names[c] != "wall time")
-            columns[names[c]].push_back(v);
-      }
-    return columns;
-  }
-
   std::string
   parameters(const std::string &formulation,
              const std::string &region,
