@@ -21,7 +21,10 @@
 # python3 (standard library only). SIZES="0.4 0.2 ..." and LEVELS="2 3 ..."
 # choose the meshes; CONFIGS="FEM|coupled PPG|..." the configurations.
 # Writes doc/benchmarks/plate_with_hole_triangles/runs.txt (every run) and
-# rates.txt, and doc/figures/plate_with_hole_triangles_error_vs_dofs.png.
+# rates.txt, doc/figures/plate_with_hole_triangles_error_vs_dofs.png and
+# doc/figures/plate_with_hole_triangles_sxx_lines.png (sigma_xx along the
+# symmetry lines at h = LINES_SIZE, default 0.1: P1, coupled with VC and
+# coupled BCPPG Unl without VC, the source's Fig. 7.33).
 # About 6 minutes on 2 shared cores with the defaults.
 set -e
 here=$(cd "$(dirname "$0")" && pwd)
@@ -53,6 +56,7 @@ formulation() {
   case "$1" in
     FEM) echo "FEM" ;;
     "coupled PPG") echo "VCBCPPG V3sn Unl" ;;
+    "coupled PPG without VC") echo "BCPPG Unl" ;;
     *) echo "VCBCPBG V5sn Unl" ;;
   esac
 }
@@ -101,6 +105,14 @@ for config in $CONFIGS; do
   IFS='|'
 done
 IFS=$IFS_SAVED
+# Fig. 7.33 of the source on triangles: sigma_xx along the symmetry lines
+# with and without VC (h = LINES_SIZE, default 0.1)
+LINES_SIZE=${LINES_SIZE:-0.1}
+run triangles "$LINES_SIZE" "coupled PPG without VC"
+for config in FEM coupled_PPG; do
+  [ -d "$work/runs/triangles_${config}_$LINES_SIZE" ] ||
+    run triangles "$LINES_SIZE" "$(echo $config | tr '_' ' ')"
+done
 
 python3 - "$work" "$out" << 'EOF'
 import json, math, os, sys
@@ -139,17 +151,17 @@ with open(os.path.join(out, "runs.txt"), "w") as f:
             "# and quadrilaterals (prm/plate_with_hole_coupled.prm, level = global refinement);\n"
             "# relative L2 and H1 errors, rates in h ~ N^(-1/2) from the previous mesh, sigma_xx at (0, R)\n"
             "# (Kirsch 30), interface jump / 3T, wall time of the whole pg_solve run (shared machine)\n")
-    f.write("%-14s %-15s %5s %9s %7s %9s %5s %9s %5s %7s %9s %9s %7s\n" % (
+    f.write("%-14s %-22s %5s %9s %7s %9s %5s %9s %5s %7s %9s %9s %7s\n" % (
         "mesh", "configuration", "size", "particles", "DoFs", "L2", "rate", "H1", "rate",
         "sxx", "sxx err", "jump/3T", "wall s"))
     for (mesh, config), rs in series.items():
         previous = None
         for r in rs:
             if not r["ok"]:
-                f.write("%-14s %-15s %5s failed: %s\n" % (mesh, config, r["size"], r["message"]))
+                f.write("%-14s %-22s %5s failed: %s\n" % (mesh, config, r["size"], r["message"]))
                 previous = None
                 continue
-            f.write("%-14s %-15s %5s %9d %7d %9.2e %5s %9.2e %5s %7.2f %9.2e %9.2e %7.2f\n" % (
+            f.write("%-14s %-22s %5s %9d %7d %9.2e %5s %9.2e %5s %7.2f %9.2e %9.2e %7.2f\n" % (
                 mesh, config, r["size"], r["particles"], r["dofs"], r["L2"],
                 "%.2f" % rate(previous, r, "L2") if previous else "-", r["H1"],
                 "%.2f" % rate(previous, r, "H1") if previous else "-",
@@ -171,7 +183,7 @@ with open(os.path.join(out, "rates.txt"), "w") as f:
             sxx = sum(v * v for v in x)
             sxy = sum(a * b for a, b in zip(x, y))
             return -2 * (n * sxy - sx * sy) / (n * sxx - sx * sx)
-        f.write("%-14s %-15s L2 %.2f H1 %.2f\n" % (mesh, config, slope("L2"), slope("H1")))
+        f.write("%-14s %-22s L2 %.2f H1 %.2f\n" % (mesh, config, slope("L2"), slope("H1")))
 
 # gnuplot data: one file per series
 for (mesh, config), rs in series.items():
@@ -189,7 +201,7 @@ set multiplot layout 1,2 title "Kirsch's plate with a hole: triangles (solid) an
 set logscale xy
 set format y "%.0e"
 set xlabel "DoFs"
-set key bottom left
+set key top right font ",9"
 set grid
 configs = "FEM coupled_PPG coupled_PBG PBG_everywhere"
 labels = "FEM coupled-VCBCPPG-V3sn coupled-VCBCPBG-V5sn VCBCPBG-V5sn-everywhere"
@@ -202,5 +214,8 @@ do for [c=2:3] {
 }
 unset multiplot
 EOF
+lines=$work/runs/triangles
+gnuplot -e "dirs='${lines}_FEM_$LINES_SIZE ${lines}_coupled_PPG_$LINES_SIZE ${lines}_coupled_PPG_without_VC_$LINES_SIZE'; labels='P1 P1+VCBCPPG-V3sn-Unl P1+BCPPG-Unl'; out='$root/doc/figures/plate_with_hole_triangles_sxx_lines.png'" \
+  "$here/sxx_along_symmetry_lines.gp"
 cat "$out/runs.txt" "$out/rates.txt"
 echo "tables in $out/, figure $figure"
