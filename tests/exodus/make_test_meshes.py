@@ -11,6 +11,9 @@ elements there); node sets 'left' (x = 0, named) and id 5 (unnamed, the
 edge x = 0, y = 0), and id 6 (unnamed, the corner (0, 0, 0)). Interior
 nodes are moved in y and z, so that the numbering is checked by volumes.
 
+spheres.g: Peridigm's particle format, 8 SPHERE elements of one node each
+(pg refuses it: a particle cloud has no cells).
+
 square_tri.g: the square [0,2] x [0,1] (num_dim = 2) of 4 x 2 cells, each
 cut into two TRI3; one block (id 3); side set 4 = the edge x = 2; node set
 'left' (x = 0) and id 2 (the corner (0, 0)).
@@ -147,7 +150,15 @@ def square_tri():
                [(4, side_set)], [(1, "left", left), (2, "", [n(0, 0)])])
 
 
+def spheres():
+    coords = [(float(i), float(j), float(k)) for k in range(2)
+              for j in range(2) for i in range(2)]
+    return cdl("spheres", 3, coords,
+               [(1, "SPHERE", [[n + 1] for n in range(8)])], [], [])
+
+
 if __name__ == "__main__":
-    for name, text in (("bar_hex", bar_hex()), ("square_tri", square_tri())):
+    for name, text in (("bar_hex", bar_hex()), ("square_tri", square_tri()),
+                       ("spheres", spheres())):
         with open(name + ".cdl", "w") as f:
             f.write(text)
