@@ -8,6 +8,7 @@
 #include <pg/base/formulation_code.h>
 #include <pg/base/interruption.h>
 #include <pg/base/parameter_file.h>
+#include <pg/base/shared_libraries.h>
 #include <pg/dofs/discretization.h>
 #include <pg/materials/material.h>
 #include <pg/postprocess/output.h>
@@ -730,6 +731,7 @@ namespace pg
                      const bool         restart)
   {
     const unsigned int dim = Parameters::read_dimension(filename);
+    Parameters::load_additional_shared_libraries(filename);
     return (dim == 2) ? run_dim<2>(filename, comm, out, restart) :
                         run_dim<3>(filename, comm, out, restart);
   }
