@@ -8,6 +8,7 @@
 #include <pg/base/formulation_code.h>
 #include <pg/base/interruption.h>
 #include <pg/base/parameter_file.h>
+#include <pg/base/shared_libraries.h>
 #include <pg/dofs/discretization.h>
 #include <pg/materials/material.h>
 #include <pg/postprocess/output.h>
@@ -330,6 +331,7 @@ namespace pg
     v.point_locations        = &point_locations;
     v.line_locations         = &line_locations;
     v.mesh_diameter          = &discretization.mesh_diameter;
+    v.node_sets              = &discretization.node_sets;
     v.time_mesh              = &discretization.time_mesh;
     v.time_setup             = &discretization.time_setup;
     v.time_shape             = &discretization.time_shape;
@@ -729,6 +731,7 @@ namespace pg
                      const bool         restart)
   {
     const unsigned int dim = Parameters::read_dimension(filename);
+    Parameters::load_additional_shared_libraries(filename);
     return (dim == 2) ? run_dim<2>(filename, comm, out, restart) :
                         run_dim<3>(filename, comm, out, restart);
   }

@@ -11,6 +11,7 @@
 #include <pg/base/application.h>
 #include <pg/base/parameter_file.h>
 #include <pg/base/parameters.h>
+#include <pg/base/shared_libraries.h>
 #include <pg/problem.h>
 
 #include <iostream>
@@ -41,7 +42,8 @@ main(int argc, char *argv[])
           AssertThrow(args.size() == 2,
                       ExcMessage("--validate needs a parameter file."));
           const unsigned int dim = pg::Parameters::read_dimension(args[1]);
-          ParameterHandler   prm;
+          pg::Parameters::load_additional_shared_libraries(args[1]);
+          ParameterHandler prm;
           if (dim == 2)
             pg::declare_all_parameters<2>(prm);
           else

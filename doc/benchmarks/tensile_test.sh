@@ -29,7 +29,8 @@ WORK=$(mktemp -d)
 mkdir -p "$OUT"
 echo "| mesh | formulation | ranks x threads | wall time (s) | setup | shape functions | vc | assembly | solve | Newton its | gauge u_x | gauge u_y | gauge u_z | reaction grip y<0 | reaction grip y>0 |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-# MESHES="tensile_test" or FORMULATIONS="..." run a subset.
+# MESHES="tensile_test" or FORMULATIONS="..." run a subset; MESHES=exodus
+# runs Peridigm's tensile_test.g itself (node sets instead of boxes).
 for mesh in ${MESHES:-tensile_test tensile_test_unmerged}; do
   for formulation in ${FORMULATIONS:-FEM BCPBG_Unl VCBCPBG_V5sn_Unl VCPBG_U1SIG PBG_U1_hourglass}; do
     formulation=$(echo "$formulation" | tr '_' ' ')
@@ -55,9 +56,18 @@ subsection Linear solver
     if [ "$RANKS" -gt 1 ]; then
       name="${name}_${RANKS}_ranks"
     fi
-    cat prm/tensile_test.prm - > "$WORK/$name.prm" <<END
+    # prm/tensile_test.prm reads Peridigm's tensile_test.g with its node
+    # sets (MESHES=exodus); the Gmsh conversions get the grips as boxes
+    if [ "$mesh" = exodus ]; then
+      file=../shared/data/peridigm_examples/tensile_test.g
+      boxes=/dev/null
+    else
+      file=$DATA/$mesh.msh
+      boxes=doc/benchmarks/tensile_test_gmsh.prm
+    fi
+    cat prm/tensile_test.prm "$boxes" - > "$WORK/$name.prm" <<END
 subsection Geometry
-  set File name = $DATA/$mesh.msh
+  set File name = $file
 end
 subsection Discretization
   set Formulation = $code
@@ -89,7 +99,11 @@ try:
         else:
             phases[f[0]] = float(f[1])
     u = s["points"]["gauge top"]
-    r = s.get("box_reactions", [[0, 0, 0], [0, 0, 0]])
+    if "node_set_reactions" in s:  # the grips: nodelist_1 and nodelist_2
+        n = s["node_set_reactions"]
+        r = [n["nodelist_1"], n["nodelist_2"]]
+    else:
+        r = s.get("box_reactions", [[0, 0, 0], [0, 0, 0]])
     print("| %s | %s | %s | %.1f | %s | %d | %.4g | %.4g | %.4g | %.4g | %.4g |" % (
         mesh, formulation, threads, wall,
         " | ".join("%.2f" % phases.get(p, 0) for p in

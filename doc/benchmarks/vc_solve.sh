@@ -58,7 +58,7 @@ for n in $SIZES; do
 done
 if [ "$TENSILE" = yes ]; then
   for solver in ${SOLVERS:-automatic direct}; do
-    sed "s|File name .*|File name = ../shared/data/peridigm_tensile_test/tensile_test.msh|; s|Formulation = .*|Formulation = VCBCPBG V5sn Unl|; s|Directory = .*|Directory = $WORK/out|" prm/tensile_test.prm > "$WORK/case.prm"
+    sed "s|Formulation = .*|" prm/tensile_test.prm > "$WORK/case.prm"
     cat >> "$WORK/case.prm" <<END
 subsection Linear solver
   set VC solver = $solver

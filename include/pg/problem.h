@@ -68,6 +68,11 @@ namespace pg
      */
     std::vector<std::vector<double>> box_reactions;
     /**
+     * The same for each 'Dirichlet node sets' item, by node set name: the
+     * vertices of the node set.
+     */
+    std::map<std::string, std::vector<double>> node_set_reactions;
+    /**
      * The traction of one Neumann id at load factor 1 on the particles
      * ('test functions' or 'geometry'; ParticleLoads::Resultant): its
      * resultant force and moment about the centre (the area centroid of

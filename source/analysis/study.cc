@@ -3,6 +3,7 @@
 #include <pg/base/exceptions.h>
 #include <pg/base/parameter_file.h>
 #include <pg/base/parameters.h>
+#include <pg/base/shared_libraries.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/patterns.h>
@@ -398,6 +399,8 @@ namespace pg
         const std::string  problem = problem_file(filename);
         const unsigned int dim =
           pg::Parameters::read_dimension(problem.empty() ? filename : problem);
+        pg::Parameters::load_additional_shared_libraries(
+          problem.empty() ? filename : problem);
         return (dim == 2) ? run_dim<2>(filename, comm, out) :
                             run_dim<3>(filename, comm, out);
       }

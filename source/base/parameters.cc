@@ -1,6 +1,7 @@
 #include <pg/base/exceptions.h>
 #include <pg/base/formulation_code.h>
 #include <pg/base/parameters.h>
+#include <pg/base/shared_libraries.h>
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
@@ -133,6 +134,7 @@ namespace pg
                         Patterns::Integer(2, 3),
                         "Space dimension: 2 or 3. Read before everything "
                         "else.");
+      declare_additional_shared_libraries(prm);
       Geometry::declare_parameters(prm);
       Discretization::declare_parameters(prm);
       Cpd::declare_parameters(prm);

@@ -2,6 +2,8 @@
 #include <pg/base/parameter_utilities.h>
 #include <pg/constraints/boundary_condition_parameters.h>
 
+#include <deal.II/base/utilities.h>
+
 #include <algorithm>
 #include <string>
 
@@ -44,6 +46,19 @@ namespace pg
           "(f_int - f_ext summed over its prescribed components) is "
           "printed and written to summary.json ('box_reactions', in the "
           "order of the boxes).");
+        prm.declare_entry(
+          "Dirichlet node sets",
+          "",
+          Patterns::Anything(),
+          "Comma-separated 'node set: components' items, e.g. 'nodelist_1: "
+          "xyz, nodelist_2: y', for an Exodus II mesh file (.g, .e, .exo): "
+          "the listed displacement components of every vertex in the named "
+          "node set take the values of subsection 'Prescribed "
+          "displacement', as Peridigm's 'Prescribed Displacement' on a "
+          "'Node Set'. A node set is named by its name in the file or, if "
+          "it has none, 'nodelist_<id>' (Peridigm's name); the banner lists "
+          "the node sets of the file. The reaction of each node set is "
+          "printed and written to summary.json ('node_set_reactions').");
         prm.declare_entry("Symmetry",
                           "",
                           Patterns::Anything(),
@@ -205,6 +220,33 @@ namespace pg
                             "the first corner of each box must be the lower "
                             "one (x0 <= x1, y0 <= y1)."));
             dirichlet_boxes.push_back(box);
+          }
+        dirichlet_node_sets.clear();
+        const std::string sets = prm.get("Dirichlet node sets");
+        const std::string sets_entry =
+          "Boundary conditions/Dirichlet node sets";
+        for (const auto &parts :
+             parse_items(sets,
+                         ',',
+                         2,
+                         sets_entry,
+                         "each item must read 'node set: components', e.g. "
+                         "'nodelist_1: xyz'."))
+          {
+            const std::string name = Utilities::trim(parts[0]);
+            AssertThrow(!name.empty(),
+                        ExcBadParameter(sets_entry,
+                                        sets,
+                                        "each item must read 'node set: "
+                                        "components', e.g. 'nodelist_1: "
+                                        "xyz'."));
+            dirichlet_node_sets.emplace_back(
+              name,
+              parse_components(parts[1],
+                               dim,
+                               sets_entry,
+                               sets,
+                               ", e.g. 'nodelist_1: xyz'."));
           }
         symmetry =
           parse_ids(prm.get("Symmetry"), "Boundary conditions/Symmetry");

@@ -39,12 +39,44 @@ namespace pg
     const DoFHandler<dim>                &dof_handler,
     const Parameters::BoundaryConditions &boundary_conditions,
     const Functions::ParsedFunction<dim> &prescribed_displacement,
-    const double                          mesh_diameter)
+    const double                          mesh_diameter,
+    const std::map<std::string, std::vector<unsigned int>> &node_sets)
     : dof_handler(dof_handler)
     , boundary_conditions(boundary_conditions)
     , prescribed_displacement(prescribed_displacement)
     , mesh_diameter(mesh_diameter)
+    , node_sets(node_sets)
   {}
+
+
+
+  const std::vector<unsigned int> &
+  node_set_vertices(
+    const std::string                                      &name,
+    const std::map<std::string, std::vector<unsigned int>> &node_sets)
+  {
+    const auto it = node_sets.find(name);
+    if (it == node_sets.end())
+      {
+        std::string available;
+        for (const auto &[set_name, vertices] : node_sets)
+          available += (available.empty() ? "" : ", ") + set_name + " (" +
+                       std::to_string(vertices.size()) + " vertices)";
+        AssertThrow(
+          false,
+          ExcBadParameter("Boundary conditions/Dirichlet node sets",
+                          name,
+                          node_sets.empty() ?
+                            "the mesh has no node sets: they come from Exodus "
+                            "II mesh files (.g, .e, .exo as 'File name' in "
+                            "subsection 'Geometry'). Use 'Dirichlet' (boundary "
+                            "ids) or 'Dirichlet boxes' instead." :
+                            "the mesh file has no node set of this name; its "
+                            "node sets are " +
+                              available + "."));
+      }
+    return it->second;
+  }
 
 
 
@@ -171,6 +203,27 @@ namespace pg
                                     "a box holds no mesh vertex; enlarge it "
                                     "or check its corners against the "
                                     "geometry."));
+      }
+
+    if (!boundary_conditions.dirichlet_node_sets.empty())
+      {
+        // every vertex's first cell and its local index there
+        std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator,
+                              unsigned int>>
+          vertex_cell(triangulation.n_vertices(),
+                      {dof_handler.end(), numbers::invalid_unsigned_int});
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            if (vertex_cell[cell->vertex_index(v)].second ==
+                numbers::invalid_unsigned_int)
+              vertex_cell[cell->vertex_index(v)] = {cell, v};
+        for (const auto &[name, mask] : boundary_conditions.dirichlet_node_sets)
+          for (const unsigned int vertex : node_set_vertices(name, node_sets))
+            {
+              const auto &[cell, v] = vertex_cell[vertex];
+              Assert(v != numbers::invalid_unsigned_int, ExcInternalError());
+              prescribe(cell, cell, v, mask);
+            }
       }
 
     for (const types::boundary_id id : boundary_conditions.symmetry)

@@ -112,7 +112,11 @@ namespace pg
                                         cpd_partial ? 0.5 : 0.),
                    memory);
     };
-    Mesh::create_mesh(geometry, triangulation, &mesh_notes, check_size);
+    Mesh::create_mesh(geometry,
+                      triangulation,
+                      &mesh_notes,
+                      check_size,
+                      &node_sets);
     time_mesh += timer.wall_time();
     timer.restart();
     cells = LinearCells<dim>(triangulation);

@@ -72,7 +72,11 @@ namespace pg
                           "",
                           Patterns::Anything(),
                           "Mesh file for 'Mesh = file': Gmsh (.msh), Abaqus "
-                          "(.inp) or UCD (.ucd), read with deal.II's GridIn. "
+                          "(.inp) or UCD (.ucd), read with deal.II's GridIn, "
+                          "or Exodus II (.g, .e, .exo: Cubit, Peridigm), read "
+                          "with netCDF: element blocks become material ids, "
+                          "side sets boundary ids, node sets are named "
+                          "vertex sets for 'Dirichlet node sets'. "
                           "Relative paths start in the working directory. "
                           "Quadrilaterals (hexahedra; FE cells are Q1), or "
                           "linear triangles (tetrahedra; FE cells are P1, "

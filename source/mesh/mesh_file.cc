@@ -1,4 +1,5 @@
 #include <pg/base/exceptions.h>
+#include <pg/mesh/exodus_file.h>
 #include <pg/mesh/mesh_file.h>
 
 #include <deal.II/base/point.h>
@@ -280,6 +281,154 @@ namespace pg
                     " -> " + std::to_string(vertices.size()) + "), e.g. at " +
                     positions + "\n";
       }
+      /**
+       * Fill @p triangulation from the Gmsh, Abaqus or UCD file
+       * @p file_name with GridIn; GridIn's message, made readable, on
+       * failure.
+       */
+      template <int dim>
+      void
+      read_with_grid_in(const std::string                 &file_name,
+                        const typename GridIn<dim>::Format format,
+                        Triangulation<dim>                &triangulation)
+      {
+        std::ifstream input(file_name);
+        AssertThrow(input.good(),
+                    ExcMessage(unreadable_file_message(
+                      file_name,
+                      "it does not exist or cannot be opened")));
+
+        // GridIn's own message says what is wrong inside the file.
+        std::string reason;
+        try
+          {
+            GridIn<dim> grid_in;
+            grid_in.attach_triangulation(triangulation);
+            grid_in.read(input, format);
+          }
+        catch (const std::exception &exc)
+          {
+            reason = "deal.II's GridIn reports: " + user_message(exc);
+            const unsigned int type = gmsh_element_type(reason);
+            AssertThrow(format != GridIn<dim>::msh || !is_higher_order(type),
+                        ExcMessage(unreadable_file_message(
+                          file_name,
+                          "it contains second- or higher-order elements "
+                          "(Gmsh element type " +
+                            std::to_string(type) +
+                            "), and pg reads linear cells only (their "
+                            "vertices are the particles or the Q1 nodes)",
+                          "Mesh it with first-order elements (Gmsh: "
+                          "'Mesh.ElementOrder = 1', or 'gmsh -order 1').")));
+          }
+        while (!reason.empty() && reason.back() == '.')
+          reason.pop_back();
+        const std::string contents_hint =
+          "Check the file's format and contents (Gmsh and ParaView open it).";
+        AssertThrow(reason.empty(),
+                    ExcMessage(unreadable_file_message(file_name,
+                                                       reason,
+                                                       contents_hint)));
+      }
+
+
+
+      /**
+       * Fill @p triangulation from the Exodus II file @p file_name
+       * (material id = element block id, boundary id = side set id) and
+       * return its node sets as positions in @p node_sets (the vertices
+       * are renumbered when coincident ones are merged).
+       */
+      template <int dim>
+      void
+      read_exodus(const std::string                              &file_name,
+                  Triangulation<dim>                             &triangulation,
+                  std::map<std::string, std::vector<Point<dim>>> &node_sets)
+      {
+        ExodusMesh<dim> mesh = read_exodus_file<dim>(file_name);
+        for (const auto &[name, nodes] : mesh.node_sets)
+          {
+            std::vector<Point<dim>> &points = node_sets[name];
+            for (const unsigned int n : nodes)
+              points.push_back(mesh.vertices[n]);
+          }
+        // As GridIn does for the other formats: a positive orientation,
+        // then the hexahedra's faces oriented consistently
+        bool hypercubes = true;
+        for (const CellData<dim> &cell : mesh.cells)
+          hypercubes = hypercubes && cell.vertices.size() == (1u << dim);
+        if (hypercubes)
+          {
+            GridTools::invert_all_negative_measure_cells(mesh.vertices,
+                                                         mesh.cells);
+            try
+              {
+                GridTools::consistently_order_cells(mesh.cells);
+              }
+            catch (const ExceptionBase &)
+              {
+                // 3-D meshes that cannot be ordered: deal.II handles the
+                // face orientations itself
+              }
+          }
+        triangulation.create_triangulation(mesh.vertices,
+                                           mesh.cells,
+                                           mesh.subcelldata);
+      }
+
+
+
+      /**
+       * The vertex index of each node set position (within @p tolerance),
+       * by a sort of the vertices along x. Throws if a position has no
+       * vertex (it cannot happen unless the mesh was changed in between).
+       */
+      template <int dim>
+      std::map<std::string, std::vector<unsigned int>>
+      node_set_vertices(
+        const std::map<std::string, std::vector<Point<dim>>> &node_sets,
+        const std::vector<Point<dim>>                        &vertices,
+        const double                                          tolerance)
+      {
+        std::vector<unsigned int> order(vertices.size());
+        for (unsigned int i = 0; i < order.size(); ++i)
+          order[i] = i;
+        std::sort(order.begin(),
+                  order.end(),
+                  [&](const unsigned int a, const unsigned int b) {
+                    return vertices[a][0] < vertices[b][0];
+                  });
+        std::map<std::string, std::vector<unsigned int>> result;
+        for (const auto &[name, points] : node_sets)
+          {
+            std::set<unsigned int> indices;
+            for (const Point<dim> &p : points)
+              {
+                auto it =
+                  std::lower_bound(order.begin(),
+                                   order.end(),
+                                   p[0] - tolerance,
+                                   [&](const unsigned int v, const double x) {
+                                     return vertices[v][0] < x;
+                                   });
+                bool found = false;
+                for (; it != order.end() &&
+                       vertices[*it][0] <= p[0] + tolerance && !found;
+                     ++it)
+                  if (vertices[*it].distance(p) <= tolerance)
+                    {
+                      indices.insert(*it);
+                      found = true;
+                    }
+                AssertThrow(found,
+                            ExcInternalError("node set " + name +
+                                             ": no vertex at " +
+                                             format_point(p)));
+              }
+            result[name].assign(indices.begin(), indices.end());
+          }
+        return result;
+      }
     } // namespace
 
 
@@ -288,7 +437,8 @@ namespace pg
     void
     read_mesh_file(const Parameters::Geometry &parameters,
                    Triangulation<dim>         &triangulation,
-                   std::string                *notes)
+                   std::string                *notes,
+                   std::map<std::string, std::vector<unsigned int>> *node_sets)
     {
       const std::string &file_name = parameters.file_name;
 
@@ -300,7 +450,9 @@ namespace pg
                      extension.begin(),
                      [](const unsigned char c) { return std::tolower(c); });
 
-      typename GridIn<dim>::Format format;
+      const bool exodus =
+        (extension == "g" || extension == "e" || extension == "exo");
+      typename GridIn<dim>::Format format = GridIn<dim>::Default;
       if (extension == "msh")
         format = GridIn<dim>::msh;
       else if (extension == "inp")
@@ -308,49 +460,23 @@ namespace pg
       else if (extension == "ucd")
         format = GridIn<dim>::ucd;
       else
-        AssertThrow(false,
+        AssertThrow(exodus,
                     ExcBadParameter("Geometry/File name",
                                     file_name,
                                     "its extension must be .msh (Gmsh), "
-                                    ".inp (Abaqus) or .ucd (UCD); these "
-                                    "are the formats pg reads."));
+                                    ".inp (Abaqus), .ucd (UCD) or .g, .e, "
+                                    ".exo (Exodus II); these are the "
+                                    "formats pg reads."));
 
-      std::ifstream input(file_name);
-      AssertThrow(input.good(),
-                  ExcMessage(unreadable_file_message(
-                    file_name,
-                    "it does not exist or cannot be opened")));
+      // Exodus II node sets, as positions until the vertices are final
+      std::map<std::string, std::vector<Point<dim>>> node_set_points;
+      if (exodus)
+        read_exodus(file_name, triangulation, node_set_points);
+      else
+        read_with_grid_in(file_name, format, triangulation);
 
-      // GridIn's own message says what is wrong inside the file.
-      std::string reason;
-      try
-        {
-          GridIn<dim> grid_in;
-          grid_in.attach_triangulation(triangulation);
-          grid_in.read(input, format);
-        }
-      catch (const std::exception &exc)
-        {
-          reason = "deal.II's GridIn reports: " + user_message(exc);
-          const unsigned int type = gmsh_element_type(reason);
-          AssertThrow(format != GridIn<dim>::msh || !is_higher_order(type),
-                      ExcMessage(unreadable_file_message(
-                        file_name,
-                        "it contains second- or higher-order elements "
-                        "(Gmsh element type " +
-                          std::to_string(type) +
-                          "), and pg reads linear cells only (their "
-                          "vertices are the particles or the Q1 nodes)",
-                        "Mesh it with first-order elements (Gmsh: "
-                        "'Mesh.ElementOrder = 1', or 'gmsh -order 1').")));
-        }
-      while (!reason.empty() && reason.back() == '.')
-        reason.pop_back();
       const std::string contents_hint =
         "Check the file's format and contents (Gmsh and ParaView open it).";
-      AssertThrow(reason.empty(),
-                  ExcMessage(
-                    unreadable_file_message(file_name, reason, contents_hint)));
       AssertThrow(triangulation.n_active_cells() > 0,
                   ExcMessage(unreadable_file_message(
                     file_name,
@@ -411,6 +537,47 @@ namespace pg
                         "cells of positive " +
                         (dim == 2 ? "area." : "volume.")));
         }
+
+      if (node_sets != nullptr)
+        {
+          node_sets->clear();
+          if (!node_set_points.empty())
+            {
+              const auto &vertices = triangulation.get_vertices();
+              Point<dim>  lower = vertices[0], upper = vertices[0];
+              for (const Point<dim> &p : vertices)
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    lower[d] = std::min(lower[d], p[d]);
+                    upper[d] = std::max(upper[d], p[d]);
+                  }
+              // merged vertices lie within 1e-10 of the diagonal in every
+              // coordinate
+              *node_sets = node_set_vertices(node_set_points,
+                                             vertices,
+                                             1e-9 * lower.distance(upper));
+            }
+        }
+      if (exodus && notes != nullptr)
+        {
+          std::set<types::material_id> blocks;
+          for (const auto &cell : triangulation.active_cell_iterators())
+            blocks.insert(cell->material_id());
+          std::string text = "  mesh file:       Exodus II, element blocks "
+                             "(material ids)";
+          for (const types::material_id id : blocks)
+            text += " " + std::to_string(id);
+          text += "; node sets";
+          if (node_set_points.empty())
+            text += ": none";
+          for (const auto &[name, points] : node_set_points)
+            text +=
+              " " + name + " (" +
+              std::to_string(node_sets != nullptr ? node_sets->at(name).size() :
+                                                    points.size()) +
+              " vertices)";
+          *notes += text + "\n";
+        }
     }
 
 
@@ -418,10 +585,12 @@ namespace pg
     template void
     read_mesh_file<2>(const Parameters::Geometry &,
                       Triangulation<2> &,
-                      std::string *);
+                      std::string *,
+                      std::map<std::string, std::vector<unsigned int>> *);
     template void
     read_mesh_file<3>(const Parameters::Geometry &,
                       Triangulation<3> &,
-                      std::string *);
+                      std::string *,
+                      std::map<std::string, std::vector<unsigned int>> *);
   } // namespace Mesh
 } // namespace pg

@@ -446,6 +446,59 @@ namespace pg
                   }
               }
       }
+
+
+      /**
+       * Extend the node sets to the vertices that refinement added: the
+       * midpoint of a line, the centre of a quadrilateral face and of a
+       * hexahedron belong to a node set if all the vertices of the line,
+       * face or cell do (level by level, so that the sets follow several
+       * refinements). A node set on a face of the coarse mesh then holds
+       * every vertex of that face of the refined mesh.
+       */
+      template <int dim>
+      void
+      refine_node_sets(
+        const Triangulation<dim>                         &triangulation,
+        std::map<std::string, std::vector<unsigned int>> &node_sets)
+      {
+        for (auto &[name, vertices] : node_sets)
+          {
+            std::vector<bool> in(triangulation.n_vertices(), false);
+            for (const unsigned int v : vertices)
+              in[v] = true;
+            const auto all_in = [&](const auto &object) {
+              for (const unsigned int v : object->vertex_indices())
+                if (!in[object->vertex_index(v)])
+                  return false;
+              return true;
+            };
+            for (unsigned int level = 0; level + 1 < triangulation.n_levels();
+                 ++level)
+              for (const auto &cell :
+                   triangulation.cell_iterators_on_level(level))
+                if (cell->has_children())
+                  {
+                    for (const unsigned int l : cell->line_indices())
+                      if (cell->line(l)->has_children() &&
+                          all_in(cell->line(l)))
+                        in[cell->line(l)->child(0)->vertex_index(1)] = true;
+                    if constexpr (dim == 3)
+                      for (const unsigned int f : cell->face_indices())
+                        if (cell->face(f)->n_vertices() == 4 &&
+                            cell->face(f)->has_children() &&
+                            all_in(cell->face(f)))
+                          in[cell->face(f)->child(0)->vertex_index(3)] = true;
+                    if (cell->reference_cell().is_hyper_cube() && all_in(cell))
+                      in[cell->child(0)->vertex_index(
+                        GeometryInfo<dim>::vertices_per_cell - 1)] = true;
+                  }
+            vertices.clear();
+            for (unsigned int v = 0; v < in.size(); ++v)
+              if (in[v])
+                vertices.push_back(v);
+          }
+      }
     } // namespace
 
 
@@ -535,10 +588,11 @@ namespace pg
 
     template <int dim>
     void
-    create_mesh(const Parameters::Geometry                  &parameters,
-                Triangulation<dim>                          &triangulation,
-                std::string                                 *notes,
-                const std::function<void(const MeshSize &)> &check_size)
+    create_mesh(const Parameters::Geometry                       &parameters,
+                Triangulation<dim>                               &triangulation,
+                std::string                                      *notes,
+                const std::function<void(const MeshSize &)>      &check_size,
+                std::map<std::string, std::vector<unsigned int>> *node_sets)
     {
       Assert(triangulation.n_cells() == 0,
              ExcMessage("create_mesh() needs an empty triangulation."));
@@ -569,7 +623,7 @@ namespace pg
         }
       else if (mesh == "file")
         {
-          read_mesh_file(parameters, triangulation, notes);
+          read_mesh_file(parameters, triangulation, notes, node_sets);
           if (check_size)
             check_size(predict_mesh_size<dim>(parameters, triangulation));
         }
@@ -582,6 +636,8 @@ namespace pg
                                     "'file'."));
 
       triangulation.refine_global(parameters.global_refinement);
+      if (node_sets != nullptr && parameters.global_refinement > 0)
+        refine_node_sets(triangulation, *node_sets);
 
       if (parameters.distortion > 0.)
         distort(parameters, triangulation);
@@ -692,12 +748,14 @@ namespace pg
     create_mesh<2>(const Parameters::Geometry &,
                    Triangulation<2> &,
                    std::string *,
-                   const std::function<void(const MeshSize &)> &);
+                   const std::function<void(const MeshSize &)> &,
+                   std::map<std::string, std::vector<unsigned int>> *);
     template void
     create_mesh<3>(const Parameters::Geometry &,
                    Triangulation<3> &,
                    std::string *,
-                   const std::function<void(const MeshSize &)> &);
+                   const std::function<void(const MeshSize &)> &,
+                   std::map<std::string, std::vector<unsigned int>> *);
 
     template double
     diameter<2>(const Triangulation<2> &);

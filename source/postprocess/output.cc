@@ -373,6 +373,18 @@ namespace pg
           out << (b > 0 ? ", " : "") << json_list(s.box_reactions[b]);
         out << "],\n";
       }
+    if (!s.node_set_reactions.empty())
+      {
+        out << "  \"node_set_reactions\": {";
+        bool first = true;
+        for (const auto &[name, r] : s.node_set_reactions)
+          {
+            out << (first ? "" : ", ") << "\"" << name
+                << "\": " << json_list(r);
+            first = false;
+          }
+        out << "},\n";
+      }
     if (!s.eigenvalues.empty())
       out << "  \"max_eigenvalue\": " << json_number(s.max_eigenvalue)
           << ",\n  \"n_zero_eigenvalues\": " << s.n_zero_eigenvalues

@@ -1,3 +1,4 @@
+#include <pg/constraints/boundary_constraints.h>
 #include <pg/postprocess/postprocessors.h>
 #include <pg/problem.h>
 
@@ -74,6 +75,40 @@ namespace pg
           Utilities::MPI::sum(reaction, comm, reaction);
           summary.box_reactions.push_back(reaction);
         }
+      // And for 'Dirichlet node sets': the vertices of each node set.
+      summary.node_set_reactions.clear();
+      if (!prm.boundary_conditions.dirichlet_node_sets.empty())
+        {
+          std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator,
+                                unsigned int>>
+            vertex_cell(dof_handler.get_triangulation().n_vertices(),
+                        {dof_handler.end(), numbers::invalid_unsigned_int});
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            for (const unsigned int v : cell->vertex_indices())
+              if (vertex_cell[cell->vertex_index(v)].second ==
+                  numbers::invalid_unsigned_int)
+                vertex_cell[cell->vertex_index(v)] = {cell, v};
+          for (const auto &[name, mask] :
+               prm.boundary_conditions.dirichlet_node_sets)
+            {
+              std::vector<double> reaction(dim, 0.);
+              for (const unsigned int vertex :
+                   node_set_vertices(name, *view.node_sets))
+                {
+                  const auto &[cell, v] = vertex_cell[vertex];
+                  for (unsigned int c = 0; c < dim; ++c)
+                    if (mask[c])
+                      {
+                        const auto dof =
+                          cell->vertex_dof_index(v, c, cell->active_fe_index());
+                        if (owned_dofs.is_element(dof))
+                          reaction[c] += force[dof];
+                      }
+                }
+              Utilities::MPI::sum(reaction, comm, reaction);
+              summary.node_set_reactions[name] = reaction;
+            }
+        }
     }
 
 
@@ -97,6 +132,13 @@ namespace pg
         {
           pcout << "  reaction on Dirichlet box " << b + 1 << ":";
           for (const double v : summary.box_reactions[b])
+            pcout << " " << (std::abs(v) < 1e-9 ? 0. : v);
+          pcout << std::endl;
+        }
+      for (const auto &[name, r] : summary.node_set_reactions)
+        {
+          pcout << "  reaction on node set " << name << ":";
+          for (const double v : r)
             pcout << " " << (std::abs(v) < 1e-9 ? 0. : v);
           pcout << std::endl;
         }

@@ -323,7 +323,8 @@ namespace pg
     BoundaryConstraints<dim>(discretization.dof_handler,
                              prm.boundary_conditions,
                              prm.prescribed_displacement,
-                             discretization.mesh_diameter)
+                             discretization.mesh_diameter,
+                             discretization.node_sets)
       .make(discretization.relevant_dofs, homogeneous, c);
   }
 

@@ -63,13 +63,22 @@ namespace pg
         std::vector<bool>   components;
       };
       std::vector<DirichletBox> dirichlet_boxes;
+      /**
+       * 'Dirichlet node sets': the name of a node set of an Exodus II mesh
+       * file and the components of its vertices that are prescribed.
+       */
+      std::vector<std::pair<std::string, std::vector<bool>>>
+        dirichlet_node_sets;
 
-      /** Whether 'Dirichlet', 'Fixed points' or 'Dirichlet boxes' is set. */
+      /**
+       * Whether 'Dirichlet', 'Fixed points', 'Dirichlet boxes' or
+       * 'Dirichlet node sets' is set.
+       */
       bool
       prescribes_values() const
       {
         return !dirichlet.empty() || !fixed_points.empty() ||
-               !dirichlet_boxes.empty();
+               !dirichlet_boxes.empty() || !dirichlet_node_sets.empty();
       }
 
       static void

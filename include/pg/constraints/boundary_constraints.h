@@ -9,11 +9,16 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <map>
+#include <string>
+#include <vector>
+
 namespace pg
 {
   /**
    * The constraints of subsection 'Boundary conditions' on the vertex DoFs:
-   * 'Dirichlet' faces, 'Fixed points', 'Dirichlet boxes' (in this order: the
+   * 'Dirichlet' faces, 'Fixed points', 'Dirichlet boxes', 'Dirichlet node
+   * sets' (in this order: the
    * first condition on a DoF wins) with the values of 'Prescribed
    * displacement' at its current time, then 'Symmetry' (n . u = 0 on planar
    * boundaries, where no Dirichlet condition holds the normal component).
@@ -33,7 +38,8 @@ namespace pg
       const DoFHandler<dim>                &dof_handler,
       const Parameters::BoundaryConditions &boundary_conditions,
       const Functions::ParsedFunction<dim> &prescribed_displacement,
-      const double                          mesh_diameter);
+      const double                          mesh_diameter,
+      const std::map<std::string, std::vector<unsigned int>> &node_sets = {});
 
     /**
      * Clear @p c, make it over @p relevant_dofs and close it; with
@@ -52,7 +58,19 @@ namespace pg
     const Parameters::BoundaryConditions &boundary_conditions;
     const Functions::ParsedFunction<dim> &prescribed_displacement;
     const double                          mesh_diameter;
+    const std::map<std::string, std::vector<unsigned int>> &node_sets;
   };
+
+  /**
+   * The vertex indices of the node set @p name of @p node_sets (those of
+   * an Exodus II mesh file, Discretization::node_sets). Throws
+   * ExcBadParameter for 'Boundary conditions/Dirichlet node sets', listing
+   * the node sets there are, if the mesh has none of this name.
+   */
+  const std::vector<unsigned int> &
+  node_set_vertices(
+    const std::string                                      &name,
+    const std::map<std::string, std::vector<unsigned int>> &node_sets);
 } // namespace pg
 
 #endif

@@ -21,6 +21,7 @@
 #include <deal.II/fe/fe_system.h>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -136,6 +137,12 @@ namespace pg
 
     /** What create_mesh() did to a mesh file, for the banner. */
     std::string mesh_notes;
+    /**
+     * The node sets of an Exodus II mesh file: name -> vertex indices of
+     * the triangulation ('Dirichlet node sets' in subsection 'Boundary
+     * conditions'); empty for other meshes.
+     */
+    std::map<std::string, std::vector<unsigned int>> node_sets;
     /**
      * Mesh::diameter() of the final mesh (computed once in reinit()): the
      * scale of the geometric tolerances of the constraints, which dynamics

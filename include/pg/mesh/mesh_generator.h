@@ -7,6 +7,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -63,13 +64,19 @@ namespace pg
      * final mesh before anything is allocated for a generated mesh, and
      * after reading, before refining, a mesh file; it may throw (the memory
      * check of pg/dofs/memory_estimate.h).
+     *
+     * The node sets of an Exodus II mesh file go to @p node_sets if given:
+     * name -> vertex indices of @p triangulation (refinement keeps the
+     * indices of the coarse vertices).
      */
     template <int dim>
     void
-    create_mesh(const Parameters::Geometry                  &parameters,
-                Triangulation<dim>                          &triangulation,
-                std::string                                 *notes = nullptr,
-                const std::function<void(const MeshSize &)> &check_size = {});
+    create_mesh(
+      const Parameters::Geometry                       &parameters,
+      Triangulation<dim>                               &triangulation,
+      std::string                                      *notes      = nullptr,
+      const std::function<void(const MeshSize &)>      &check_size = {},
+      std::map<std::string, std::vector<unsigned int>> *node_sets  = nullptr);
 
     /**
      * Which active cells are meshfree, indexed by active_cell_index(), from

@@ -24,6 +24,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <functional>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -129,6 +130,9 @@ namespace pg
       const std::vector<LineSampleLocation<dim>> *line_locations = nullptr;
       /** Mesh::diameter() of the mesh, set in setup. */
       const double *mesh_diameter = nullptr;
+      /** The node sets of an Exodus II mesh file (Discretization). */
+      const std::map<std::string, std::vector<unsigned int>> *node_sets =
+        nullptr;
 
       /**
        * Wall times (s) of the phases and the timers, for summary.timing
