@@ -8,7 +8,9 @@
 # step, 'Tolerance' 1e-10). Release build, one MPI rank.
 #
 # Usage (from the repository root):
-#   sh doc/benchmarks/amg_iterations.sh BUILD [sizes] > doc/benchmarks/amg_iterations.md
+#   sh doc/benchmarks/amg_iterations.sh BUILD [sizes] > table.md
+# (the table of doc/benchmarks/amg_iterations.md; do not redirect into
+# that page, which has more than the table)
 # sizes: the x-subdivisions, y = z = x/4 (default "16 24 32 48").
 set -e
 PG=$1/applications/pg_solve/pg_solve

@@ -1,5 +1,7 @@
+# Helper, not a benchmark: it has no page of its own and is not run by
+# itself (doc/benchmarks/README.md, "Helpers").
 # The cantilever of the solver benchmarks (amg_iterations.sh,
-# amg_tuning.sh, vc_solve.sh, scaling.sh), sourced by them:
+# amg_tuning.sh, amg_operator.sh, vc_solve.sh, scaling.sh), sourced by them:
 # 4 x 1 x 1 (3-D) or 4 x 1 (2-D) on n x n/4 (x n/4) cells distorted by 0.25,
 # clamped at x = 0, a dead downward traction of 1 on x = 4, neo-Hooke
 # E = 1000, nu = 0.3, one load step, Krylov tolerance 1e-10, no VTU, the

@@ -1,3 +1,6 @@
+# Helper, not a benchmark: it has no page of its own and is not run by
+# itself (doc/benchmarks/README.md, "Helpers"); the benchmark is
+# torsion_prism.sh, its page torsion_prism.md.
 # The torsion prism of B-10 (Table 7.4), sourced by torsion_prism.sh and
 # mixed_cost.sh: a square prism 1 x 1 x 5 mm on N x N x 5N cells,
 # isochoric-volumetric neo-Hooke with K = 500 MPa and mu = 161.148 MPa

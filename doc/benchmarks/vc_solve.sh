@@ -12,7 +12,9 @@
 # displacement (both solvers must agree). Release build, one MPI rank.
 #
 # Usage (from the repository root):
-#   sh doc/benchmarks/vc_solve.sh BUILD [sizes] [tensile] > doc/benchmarks/vc_solve.md
+#   sh doc/benchmarks/vc_solve.sh BUILD [sizes] [tensile] > table.md
+# (the rows of the tables of doc/benchmarks/vc_solve.md; do not redirect
+# into that page, which has more than the table)
 # sizes: the x-subdivisions, y = z = x/4 (default "16 32 48 64");
 # tensile: "yes" (default) adds the tensile bar.
 # SOLVERS: the 'VC solver' values to run (default "automatic direct";
@@ -58,7 +60,7 @@ for n in $SIZES; do
 done
 if [ "$TENSILE" = yes ]; then
   for solver in ${SOLVERS:-automatic direct}; do
-    sed "s|Formulation = .*|" prm/tensile_test.prm > "$WORK/case.prm"
+    sed "s|Formulation = .*|Formulation = VCBCPBG V5sn Unl|; s|Directory = .*|Directory = $WORK/out|" prm/tensile_test.prm > "$WORK/case.prm"
     cat >> "$WORK/case.prm" <<END
 subsection Linear solver
   set VC solver = $solver
