@@ -4,6 +4,7 @@
 #include <pg/base/parameter_file.h>
 #include <pg/base/parameters.h>
 #include <pg/base/shared_libraries.h>
+#include <pg/problem.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/patterns.h>

@@ -1,7 +1,7 @@
 #include <pg/elements/kernel_cost.h>
 #include <pg/elements/q1_cell.h>
 #include <pg/postprocess/postprocessors.h>
-#include <pg/problem.h>
+#include <pg/postprocess/run_summary.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>

@@ -1,6 +1,6 @@
 #include <pg/postprocess/output.h>
 #include <pg/postprocess/postprocessors.h>
-#include <pg/problem.h>
+#include <pg/postprocess/run_summary.h>
 
 #include <deal.II/base/patterns.h>
 #include <deal.II/base/quadrature_lib.h>

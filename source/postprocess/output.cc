@@ -1,5 +1,5 @@
 #include <pg/postprocess/output.h>
-#include <pg/problem.h>
+#include <pg/postprocess/run_summary.h>
 
 #include <algorithm>
 #include <fstream>

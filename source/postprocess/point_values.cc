@@ -1,5 +1,5 @@
 #include <pg/postprocess/postprocessors.h>
-#include <pg/problem.h>
+#include <pg/postprocess/run_summary.h>
 
 namespace pg
 {

@@ -1,6 +1,6 @@
 #include <pg/constraints/boundary_constraints.h>
 #include <pg/postprocess/postprocessors.h>
-#include <pg/problem.h>
+#include <pg/postprocess/run_summary.h>
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #include <pg/postprocess/condensed_pressure_field.h>
 #include <pg/postprocess/output.h>
 #include <pg/postprocess/postprocessors.h>
-#include <pg/problem.h>
+#include <pg/postprocess/run_summary.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>

@@ -1,4 +1,5 @@
 #include <pg/base/exceptions.h>
+#include <pg/base/parameters.h>
 #include <pg/constraints/boundary_constraints.h>
 #include <pg/constraints/support_check.h>
 #include <pg/elements/family_group.h>
@@ -6,7 +7,7 @@
 #include <pg/elements/u1_stabilisation.h>
 #include <pg/elements/unit_stress_residual.h>
 #include <pg/postprocess/problem_view.h>
-#include <pg/problem.h>
+#include <pg/postprocess/run_summary.h>
 #include <pg/shape_functions/shape_functions.h>
 #include <pg/solvers/discrete_system.h>
 #include <pg/solvers/linear_solver.h>

@@ -7,7 +7,7 @@
 #include <pg/base/parameters.h>
 #include <pg/history/quadrature_point_history.h>
 #include <pg/postprocess/problem_view.h>
-#include <pg/problem.h>
+#include <pg/postprocess/run_summary.h>
 #include <pg/solvers/mechanical_system.h>
 
 #include <deal.II/base/conditional_ostream.h>

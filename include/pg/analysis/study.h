@@ -2,7 +2,7 @@
 #define pg_analysis_study_h
 
 #include <pg/base/global.h>
-#include <pg/problem.h>
+#include <pg/postprocess/run_summary.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>

@@ -2,7 +2,7 @@
 #define pg_analysis_study_report_h
 
 #include <pg/analysis/study.h>
-#include <pg/problem.h>
+#include <pg/postprocess/run_summary.h>
 
 #include <ostream>
 #include <string>

@@ -5,7 +5,7 @@
 #include <pg/base/global.h>
 #include <pg/base/parameters.h>
 #include <pg/dofs/discretization.h>
-#include <pg/problem.h>
+#include <pg/postprocess/run_summary.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/types.h>
