@@ -14,6 +14,7 @@
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <vector>
 
 using namespace dealii;
 
@@ -81,6 +82,23 @@ print_rounded(const std::string &name, const double value, const int digits)
   std::ostringstream s;
   s << std::setprecision(digits) << value;
   deallog << name << " = " << s.str() << std::endl;
+}
+
+/**
+ * The least-squares slope of log(y) against log(x): the convergence rate of
+ * errors y against mesh sizes x (or, with x the DoFs, minus dim times it).
+ */
+inline double
+log_log_slope(const std::vector<double> &x, const std::vector<double> &y)
+{
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (unsigned int i = 0; i < x.size(); ++i)
+    {
+      const double lx = std::log(x[i]), ly = std::log(y[i]);
+      sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
+    }
+  const double n = x.size();
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
 #endif

@@ -50,6 +50,25 @@ namespace pg
 
 
 
+  template <int dim>
+  std::vector<
+    std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>>
+  vertex_cells(const DoFHandler<dim> &dof_handler)
+  {
+    std::vector<
+      std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>>
+      result(dof_handler.get_triangulation().n_vertices(),
+             {dof_handler.end(), numbers::invalid_unsigned_int});
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (result[cell->vertex_index(v)].second ==
+            numbers::invalid_unsigned_int)
+          result[cell->vertex_index(v)] = {cell, v};
+    return result;
+  }
+
+
+
   const std::vector<unsigned int> &
   node_set_vertices(
     const std::string                                      &name,
@@ -207,16 +226,7 @@ namespace pg
 
     if (!boundary_conditions.dirichlet_node_sets.empty())
       {
-        // every vertex's first cell and its local index there
-        std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator,
-                              unsigned int>>
-          vertex_cell(triangulation.n_vertices(),
-                      {dof_handler.end(), numbers::invalid_unsigned_int});
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          for (const unsigned int v : cell->vertex_indices())
-            if (vertex_cell[cell->vertex_index(v)].second ==
-                numbers::invalid_unsigned_int)
-              vertex_cell[cell->vertex_index(v)] = {cell, v};
+        const auto vertex_cell = vertex_cells(dof_handler);
         for (const auto &[name, mask] : boundary_conditions.dirichlet_node_sets)
           for (const unsigned int vertex : node_set_vertices(name, node_sets))
             {
@@ -298,4 +308,10 @@ namespace pg
 
   template class BoundaryConstraints<2>;
   template class BoundaryConstraints<3>;
+  template std::vector<
+    std::pair<typename DoFHandler<2>::active_cell_iterator, unsigned int>>
+  vertex_cells(const DoFHandler<2> &);
+  template std::vector<
+    std::pair<typename DoFHandler<3>::active_cell_iterator, unsigned int>>
+  vertex_cells(const DoFHandler<3> &);
 } // namespace pg

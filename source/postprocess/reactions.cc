@@ -79,15 +79,7 @@ namespace pg
       summary.node_set_reactions.clear();
       if (!prm.boundary_conditions.dirichlet_node_sets.empty())
         {
-          std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator,
-                                unsigned int>>
-            vertex_cell(dof_handler.get_triangulation().n_vertices(),
-                        {dof_handler.end(), numbers::invalid_unsigned_int});
-          for (const auto &cell : dof_handler.active_cell_iterators())
-            for (const unsigned int v : cell->vertex_indices())
-              if (vertex_cell[cell->vertex_index(v)].second ==
-                  numbers::invalid_unsigned_int)
-                vertex_cell[cell->vertex_index(v)] = {cell, v};
+          const auto vertex_cell = vertex_cells(dof_handler);
           for (const auto &[name, mask] :
                prm.boundary_conditions.dirichlet_node_sets)
             {

@@ -20,20 +20,6 @@
 
 #include <cmath>
 
-/** Least-squares slope of log(error) against log(h). */
-double
-rate(const std::vector<double> &h, const std::vector<double> &e)
-{
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (unsigned int i = 0; i < h.size(); ++i)
-    {
-      const double x = std::log(h[i]), y = std::log(e[i]);
-      sx += x, sy += y, sxx += x * x, sxy += x * y;
-    }
-  const double n = h.size();
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 
 
 int
@@ -66,7 +52,7 @@ main(int argc, char **argv)
           l2.push_back(s.L2_relative);
           h1.push_back(s.H1_relative);
         }
-      const double       r0 = rate(h, l2), r1 = rate(h, h1);
+      const double       r0 = log_log_slope(h, l2), r1 = log_log_slope(h, h1);
       std::ostringstream rates;
       rates << std::fixed << std::setprecision(1) << r0 << " / " << r1;
       deallog << std::left << std::setw(17) << code << std::right

@@ -30,24 +30,6 @@ plate(const std::string &formulation, const unsigned int refinement)
 
 
 
-/** Least-squares slope of log(y) against log(x). */
-double
-slope(const std::vector<double> &x, const std::vector<double> &y)
-{
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (unsigned int i = 0; i < x.size(); ++i)
-    {
-      sx += std::log(x[i]);
-      sy += std::log(y[i]);
-      sxx += std::log(x[i]) * std::log(x[i]);
-      sxy += std::log(x[i]) * std::log(y[i]);
-    }
-  const double n = x.size();
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
-
-
 int
 main(int argc, char **argv)
 {
@@ -70,7 +52,8 @@ main(int argc, char **argv)
            << s.H1_relative << ", interface jump / 3T " << jump.back();
       deallog << line.str() << std::endl;
     }
-  const double rate_L2 = -2 * slope(dofs, L2), rate_H1 = -2 * slope(dofs, H1);
+  const double rate_L2 = -2 * log_log_slope(dofs, L2),
+               rate_H1 = -2 * log_log_slope(dofs, H1);
   std::ostringstream rates;
   rates << std::fixed << std::setprecision(1) << rate_L2 << " / " << rate_H1;
   deallog << "rates L2 / H1: " << rates.str() << ", at least 1.5 / 1.0: "

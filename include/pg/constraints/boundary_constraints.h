@@ -67,6 +67,16 @@ namespace pg
    * ExcBadParameter for 'Boundary conditions/Dirichlet node sets', listing
    * the node sets there are, if the mesh has none of this name.
    */
+  /**
+   * For every vertex of the triangulation of @p dof_handler, an active cell
+   * that has it and its index there (invalid_unsigned_int for unused
+   * vertices): how the DoFs of the vertices of a node set are found.
+   */
+  template <int dim>
+  std::vector<
+    std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>>
+  vertex_cells(const DoFHandler<dim> &dof_handler);
+
   const std::vector<unsigned int> &
   node_set_vertices(
     const std::string                                      &name,
