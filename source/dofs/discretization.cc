@@ -33,19 +33,26 @@ namespace pg
                                               meshfree.end(),
                                               [](const bool b) { return b; }))
         return;
-      const std::string mesh = "the mesh file " + geometry.file_name +
-                               " ('File name' in subsection 'Geometry') "
-                               "holds " +
-                               cells.name() + ", and ";
+      // a generated mesh split by 'Cells = simplices', or a mesh file
+      const bool        split = (geometry.mesh != "file");
+      const std::string mesh =
+        split ? "'Cells = simplices' (subsection 'Geometry') splits the "
+                "mesh into " +
+                  cells.name() + ", and " :
+                "the mesh file " + geometry.file_name +
+                  " ('File name' in subsection 'Geometry') holds " +
+                  cells.name() + ", and ";
       const std::string locks =
         "the mixed finite element cells on them would be P1-P0 (a constant "
         "pressure per " +
         std::string(dim == 2 ? "triangle" : "tetrahedron") +
         "), which locks: pg does not build them. ";
       const std::string recombine =
-        "or recombine the mesh into " +
-        std::string(dim == 2 ? "quadrilaterals" : "hexahedra") +
-        " (Gmsh: 'Mesh.RecombineAll = 1'), where the mixed cells are " +
+        (split ? std::string("or set 'Cells = hypercubes'") :
+                 "or recombine the mesh into " +
+                   std::string(dim == 2 ? "quadrilaterals" : "hexahedra") +
+                   " (Gmsh: 'Mesh.RecombineAll = 1')") +
+        ", where the mixed cells are " +
         std::string(dim == 2 ? "Q1P0." : "H1P0.");
       AssertThrow(formulation.method != FormulationCode::Method::fem,
                   ExcBadParameter("Discretization/Formulation",

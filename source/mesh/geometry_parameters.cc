@@ -26,6 +26,26 @@ namespace pg
           "quarter [0,L]^2 of a square plate minus the disk of radius R at "
           "the origin (2-D), ids 0 hole, 1 x=0, 2 y=0, 3 x=L, 4 y=L. 'file': "
           "read 'File name'.");
+        prm.declare_entry(
+          "Cells",
+          "hypercubes",
+          Patterns::Selection("hypercubes|simplices"),
+          "The kind of cell of a generated mesh (and of a mesh file of "
+          "quadrilaterals or hexahedra). 'hypercubes': the quadrilaterals "
+          "(hexahedra) as generated or read. 'simplices': after 'Global "
+          "refinement', 'Distortion' and 'Hole', each quadrilateral is split "
+          "into 8 triangles (a vertex at each edge midpoint and at the "
+          "centre) and each hexahedron into 24 tetrahedra (a vertex at each "
+          "face centre), with deal.II's "
+          "GridGenerator::convert_hypercube_to_simplex_mesh(); the boundary "
+          "and material ids are kept, the new vertices on the hole of 'plate "
+          "with hole' lie on its circle, and the cells are then straight P1 "
+          "triangles (tetrahedra): FE cells are P1, the particles are the "
+          "vertices with the volumes lumped from the simplices (as for a "
+          "Gmsh mesh of simplices, which this entry leaves unchanged). The "
+          "split of a regular mesh is the mirror image of itself across the "
+          "mid-planes of every cell, so a half or quarter model of a "
+          "symmetric box is the exact mirror image of the full body.");
         prm.declare_entry("Lower corner",
                           "0, 0",
                           Patterns::List(Patterns::Double()),
@@ -145,7 +165,8 @@ namespace pg
     {
       prm.enter_subsection("Geometry");
       {
-        mesh = prm.get("Mesh");
+        mesh  = prm.get("Mesh");
+        cells = prm.get("Cells");
         lower_corner =
           parse_doubles(prm.get("Lower corner"), "Geometry/Lower corner");
         upper_corner =

@@ -447,6 +447,90 @@ namespace pg
               }
       }
 
+      /**
+       * 'Cells = simplices': split the quadrilaterals (hexahedra) of
+       * @p hypercubes into 8 triangles (24 tetrahedra) each with
+       * GridGenerator::convert_hypercube_to_simplex_mesh(), into the empty
+       * @p triangulation. deal.II 9.4's function takes the active cells of a
+       * refined mesh and keeps the material and boundary ids, but puts the
+       * new vertices (edge midpoints and cell centres in 2-D, face centres
+       * in 3-D) at the mean of the old ones, ignoring the manifolds: the
+       * new vertices of a curved boundary (the hole of the plate with a
+       * hole) are moved here onto it (the manifold's centre of the face).
+       * It copies the manifold ids but not the manifolds; the simplices are
+       * straight P1 cells (pg/mesh/linear_cells.h) that are not refined
+       * again, so every manifold id is reset to flat.
+       */
+      template <int dim>
+      void
+      split_into_simplices(const Triangulation<dim> &hypercubes,
+                           Triangulation<dim>       &triangulation)
+      {
+        // the straight and the curved centres of the curved boundary faces
+        std::vector<std::pair<Point<dim>, Point<dim>>> curved;
+        for (const auto &cell : hypercubes.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() &&
+                face->manifold_id() != numbers::flat_manifold_id)
+              curved.emplace_back(face->center(), face->center(true));
+
+        GridGenerator::convert_hypercube_to_simplex_mesh(hypercubes,
+                                                         triangulation);
+        triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
+
+        if (curved.empty())
+          return;
+        std::vector<bool> moved(triangulation.n_vertices(), false);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              for (const unsigned int v : face->vertex_indices())
+                {
+                  const unsigned int i = face->vertex_index(v);
+                  if (moved[i])
+                    continue;
+                  moved[i] = true;
+                  for (const auto &[straight, on_manifold] : curved)
+                    if (face->vertex(v).distance(straight) <=
+                        1e-10 * face->diameter())
+                      {
+                        face->vertex(v) = on_manifold;
+                        break;
+                      }
+                }
+      }
+
+
+
+      /**
+       * The size of @p size split into simplices: 8 triangles per
+       * quadrilateral and a vertex at each edge midpoint and cell centre of
+       * the @p n cells per direction (a grid of 2 n + 1 vertices per
+       * direction); 24 tetrahedra per hexahedron and a vertex at each face
+       * centre. The spacing is that of the vertices.
+       */
+      template <int dim>
+      void
+      predict_split(const std::vector<double> &n,
+                    const double               measure,
+                    MeshSize                  &size)
+      {
+        if (dim == 2)
+          {
+            size.n_cells    = 8. * n[0] * n[1];
+            size.n_vertices = (2. * n[0] + 1.) * (2. * n[1] + 1.);
+          }
+        else
+          {
+            size.n_cells    = 24. * n[0] * n[1] * n[2];
+            size.n_vertices = (n[0] + 1.) * (n[1] + 1.) * (n[2] + 1.) +
+                              n[0] * n[1] * (n[2] + 1.) +
+                              n[0] * (n[1] + 1.) * n[2] +
+                              (n[0] + 1.) * n[1] * n[2];
+          }
+        size.spacing = std::pow(measure / size.n_vertices, 1. / dim);
+      }
+
 
       /**
        * Extend the node sets to the vertices that refinement added: the
@@ -553,6 +637,8 @@ namespace pg
       size.n_coarse_cells =
         size.n_cells / std::pow(refined, static_cast<double>(dim));
       size.spacing = std::pow(measure / size.n_cells, 1. / dim);
+      if (parameters.cells == "simplices")
+        predict_split<dim>(n, measure, size);
       return size;
     }
 
@@ -581,6 +667,15 @@ namespace pg
       for (const auto &cell : coarse.active_cell_iterators())
         volume += cell->measure();
       size.spacing = std::pow(std::abs(volume) / size.n_cells, 1. / dim);
+      if (parameters.cells == "simplices" &&
+          coarse.all_reference_cells_are_hyper_cube())
+        {
+          // each cell gives 8 (24) simplices, and there are about 4 times
+          // as many vertices (edge midpoints and centres; face centres)
+          size.n_cells *= (dim == 2 ? 8. : 24.);
+          size.n_vertices *= (dim == 2 ? 4. : 4.);
+          size.spacing = std::pow(std::abs(volume) / size.n_vertices, 1. / dim);
+        }
       return size;
     }
 
@@ -598,6 +693,11 @@ namespace pg
              ExcMessage("create_mesh() needs an empty triangulation."));
 
       const std::string &mesh = parameters.mesh;
+      // 'Cells = simplices': the hypercube mesh is built, refined and
+      // distorted here, then split into the triangulation
+      const bool          split = (parameters.cells == "simplices");
+      Triangulation<dim>  hypercubes;
+      Triangulation<dim> &target = split ? hypercubes : triangulation;
       // before anything is allocated (issue 45, item 1: a typo asked for
       // 2 x 10^10 cells)
       if (check_size && mesh != "file" &&
@@ -605,12 +705,12 @@ namespace pg
         check_size(predict_mesh_size<dim>(parameters));
       if (mesh == "hyper rectangle")
         {
-          create_hyper_rectangle(parameters, triangulation);
+          create_hyper_rectangle(parameters, target);
           if (!parameters.hole.empty())
-            cut_hole(parameters, triangulation);
+            cut_hole(parameters, target);
         }
       else if (mesh == "cook membrane")
-        create_cook_membrane(parameters, triangulation);
+        create_cook_membrane(parameters, target);
       else if (mesh == "plate with hole")
         {
           AssertThrow(dim == 2,
@@ -619,13 +719,13 @@ namespace pg
                                       "this mesh is not yet available in "
                                       "3-D; use it with 'Dimension = 2'."));
           if constexpr (dim == 2)
-            create_plate_with_hole(parameters, triangulation);
+            create_plate_with_hole(parameters, target);
         }
       else if (mesh == "file")
         {
-          read_mesh_file(parameters, triangulation, notes, node_sets);
+          read_mesh_file(parameters, target, notes, node_sets);
           if (check_size)
-            check_size(predict_mesh_size<dim>(parameters, triangulation));
+            check_size(predict_mesh_size<dim>(parameters, target));
         }
       else
         AssertThrow(false,
@@ -635,12 +735,42 @@ namespace pg
                                     "membrane', 'plate with hole' or "
                                     "'file'."));
 
-      triangulation.refine_global(parameters.global_refinement);
+      target.refine_global(parameters.global_refinement);
       if (node_sets != nullptr && parameters.global_refinement > 0)
-        refine_node_sets(triangulation, *node_sets);
+        refine_node_sets(target, *node_sets);
 
       if (parameters.distortion > 0.)
-        distort(parameters, triangulation);
+        distort(parameters, target);
+
+      if (split)
+        {
+          // the split numbers the vertices anew
+          AssertThrow(
+            node_sets == nullptr || node_sets->empty() ||
+              !hypercubes.all_reference_cells_are_hyper_cube(),
+            ExcBadParameter("Geometry/Cells",
+                            "simplices",
+                            "the mesh file " + parameters.file_name +
+                              " has node sets, which pg does not carry over to "
+                              "the split mesh. Use 'Cells = hypercubes', or "
+                              "mesh the body with tetrahedra (or triangles) "
+                              "and give it the node sets there."));
+          if (hypercubes.all_reference_cells_are_hyper_cube())
+            {
+              split_into_simplices(hypercubes, triangulation);
+              if (notes != nullptr)
+                *notes +=
+                  "  simplices:       split " +
+                  std::to_string(hypercubes.n_active_cells()) +
+                  (dim == 2 ? " quadrilaterals into " : " hexahedra into ") +
+                  std::to_string(triangulation.n_active_cells()) +
+                  (dim == 2 ? " triangles" : " tetrahedra") +
+                  " ('Cells = simplices')\n";
+            }
+          else
+            // a mesh file of simplices: nothing to split
+            triangulation.copy_triangulation(hypercubes);
+        }
     }
 
 

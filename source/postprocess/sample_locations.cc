@@ -8,6 +8,67 @@ namespace pg
 {
   namespace Postprocess
   {
+    namespace
+    {
+      /**
+       * The active cell around @p p and the reference coordinates of @p p
+       * in it, or an invalid iterator if @p p lies outside the mesh.
+       * deal.II 9.4's GridTools::find_active_cell_around_point() tests the
+       * reference point against the unit square (cube) also for triangles
+       * and tetrahedra, so on a simplex mesh it can return a cell that does
+       * not contain @p p (most often for a point on an edge or face; the
+       * value there is then extrapolated from the wrong cell; deal.II
+       * issue 14704, fixed in 9.5.2 by a brute-force search). On simplex
+       * meshes its answer is therefore checked with the reference cell,
+       * and if it fails every cell is tried (P1 cells map affinely, so the
+       * reference point is exact).
+       */
+      template <int dim>
+      std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+      find_cell(const Mapping<dim>    &mapping,
+                const DoFHandler<dim> &dof_handler,
+                const Point<dim>      &p,
+                const bool             simplex)
+      {
+        const double tolerance = 1e-10;
+        std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+          found;
+        try
+          {
+            found =
+              GridTools::find_active_cell_around_point(mapping, dof_handler, p);
+            if (found.first.state() == IteratorState::valid &&
+                (!simplex ||
+                 found.first->reference_cell().contains_point(found.second,
+                                                              tolerance)))
+              return found;
+          }
+        catch (...)
+          {
+            // outside the mesh, or (on simplices) not found
+          }
+        found.first = typename DoFHandler<dim>::active_cell_iterator();
+        if (simplex)
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            {
+              Point<dim> unit;
+              try
+                {
+                  unit = mapping.transform_real_to_unit_cell(cell, p);
+                }
+              catch (...)
+                {
+                  continue;
+                }
+              if (cell->reference_cell().contains_point(unit, tolerance))
+                return {cell, unit};
+            }
+        return found;
+      }
+    } // namespace
+
+
+
     template <int dim>
     std::vector<
       std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>
@@ -15,8 +76,8 @@ namespace pg
       const DoFHandler<dim> &dof_handler,
       const std::vector<std::pair<std::string, std::vector<double>>> &points)
     {
-      const Mapping<dim> &mapping =
-        LinearCells<dim>(dof_handler.get_triangulation()).mapping();
+      const LinearCells<dim> cells(dof_handler.get_triangulation());
+      const Mapping<dim>    &mapping = cells.mapping();
       std::vector<
         std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>>
         locations;
@@ -25,21 +86,9 @@ namespace pg
           Point<dim> p;
           for (unsigned int d = 0; d < dim; ++d)
             p[d] = coordinates[d];
-          std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
-               found;
-          bool inside = true;
-          try
-            {
-              found  = GridTools::find_active_cell_around_point(mapping,
-                                                               dof_handler,
-                                                               p);
-              inside = (found.first.state() == IteratorState::valid);
-            }
-          catch (...)
-            {
-              inside = false;
-            }
-          AssertThrow(inside,
+          const auto found =
+            find_cell(mapping, dof_handler, p, cells.is_simplex());
+          AssertThrow(found.first.state() == IteratorState::valid,
                       ExcBadParameter("Output/Points",
                                       name,
                                       "this point lies outside the mesh."));
@@ -56,8 +105,8 @@ namespace pg
                         const std::vector<Parameters::Output::Line> &lines,
                         const unsigned int                           n_samples)
     {
-      const Mapping<dim> &mapping =
-        LinearCells<dim>(dof_handler.get_triangulation()).mapping();
+      const LinearCells<dim> cells(dof_handler.get_triangulation());
+      const Mapping<dim>    &mapping = cells.mapping();
       std::vector<LineSampleLocation<dim>> locations;
       for (unsigned int l = 0; l < lines.size(); ++l)
         {
@@ -71,20 +120,12 @@ namespace pg
             {
               const Point<dim> p =
                 start + (end - start) * (1. * i / (n_samples - 1));
-              try
-                {
-                  const auto found =
-                    GridTools::find_active_cell_around_point(mapping,
-                                                             dof_handler,
-                                                             p);
-                  if (found.first.state() == IteratorState::valid)
-                    locations.push_back(
-                      {l, p.distance(start), p, found.first, found.second});
-                }
-              catch (...)
-                {
-                  // outside the mesh: no sample
-                }
+              // outside the mesh: no sample
+              const auto found =
+                find_cell(mapping, dof_handler, p, cells.is_simplex());
+              if (found.first.state() == IteratorState::valid)
+                locations.push_back(
+                  {l, p.distance(start), p, found.first, found.second});
             }
         }
       return locations;

@@ -8,8 +8,10 @@
 // pass the patch test. A triangle numbered clockwise is not an error: GridIn
 // renumbers it, and the run passes the patch test. Duplicated vertices where
 // two blocks of triangles meet are merged (the patch test passes) or, with
-// 'Coincident vertices = reject', named. (The test directory in the messages is
-// printed as <tests>.)
+// 'Coincident vertices = reject', named. On the hyper rectangle split by
+// 'Cells = simplices' the same refusals name that entry and advise
+// 'Cells = hypercubes'. (The test directory in the messages is printed as
+// <tests>.)
 
 #include "../tests.h"
 #include "problem_fixture.h"
@@ -102,4 +104,20 @@ main(int argc, char **argv)
   check("two blocks of triangles with duplicated vertices, rejected",
         "split_triangles.msh",
         "subsection Geometry\n  set Coincident vertices = reject\nend\n");
+  // the built-in mesh split by 'Cells = simplices': the hint is
+  // 'Cells = hypercubes', not Gmsh's recombination
+  const std::string split =
+    "subsection Geometry\n  set Mesh = hyper rectangle\n"
+    "  set Cells = simplices\n  set Lower corner = -1, -1\n"
+    "  set Upper corner = 1, 1\n  set Subdivisions = 6\nend\n";
+  check("FEM Q1P0 on the split hyper rectangle",
+        "distorted_triangles.msh",
+        split +
+          "subsection Discretization\n  set Formulation = FEM Q1P0\nend\n");
+  check("VCBCPBG V5sn UnlP0 beside P1 cells on the split hyper rectangle",
+        "distorted_triangles.msh",
+        split + "subsection Discretization\n"
+                "  set Formulation = VCBCPBG V5sn UnlP0\nend\n"
+                "subsection Geometry\n  set Meshfree region = box 0, -1.1 : "
+                "1.1, 1.1\nend\n");
 }

@@ -19,7 +19,14 @@ namespace pg
     struct Geometry
     {
       /** hyper rectangle | cook membrane | plate with hole | file */
-      std::string               mesh;
+      std::string mesh;
+      /**
+       * 'Cells': hypercubes (the quadrilaterals or hexahedra as generated or
+       * read) | simplices (each split into 8 triangles or 24 tetrahedra
+       * after refinement and distortion, deal.II's
+       * GridGenerator::convert_hypercube_to_simplex_mesh()).
+       */
+      std::string               cells = "hypercubes";
       std::vector<double>       lower_corner;
       std::vector<double>       upper_corner;
       std::vector<unsigned int> subdivisions;
