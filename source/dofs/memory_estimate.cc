@@ -76,11 +76,22 @@ namespace pg
         estimate.family_size      = 0;
         estimate.nonzeros_per_row = std::pow(3., dim) * fields;
         estimate.bytes_per_dof    = q1_bytes_per_dof[dim - 2];
+        if (size.simplex && size.edge_neighbours > 0)
+          {
+            // P1: a node couples to its edge neighbours; the Q1 figure
+            // scaled with the nonzeros (matrix, AMG hierarchy)
+            estimate.nonzeros_per_row = (size.edge_neighbours + 1.) * fields;
+            estimate.bytes_per_dof *=
+              (size.edge_neighbours + 1.) / std::pow(3., dim);
+          }
       }
     else
       {
-        // the horizon in units of the spacing
-        double horizon = discretization.horizon_factor + horizon_extra;
+        // the horizon in units of the lattice spacing (the horizon factor
+        // multiplies the mean edge length, longer than the lattice
+        // spacing on simplex meshes)
+        double horizon = (discretization.horizon_factor + horizon_extra) *
+                         size.edge_to_spacing;
         if (discretization.horizon > 0. && size.spacing > 0.)
           horizon = discretization.horizon / size.spacing + horizon_extra;
         if (discretization.nearest_neighbours > 0)

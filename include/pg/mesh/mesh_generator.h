@@ -28,6 +28,28 @@ namespace pg
       double spacing = 0;
       /** Cells before refinement: of 'Subdivisions', or of the file. */
       double n_coarse_cells = 0;
+      /**
+       * True for a mesh file of triangles or tetrahedra. Their counts
+       * differ from those of hypercubes: a tetrahedral mesh has about 5 to
+       * 6 cells per vertex (a hexahedral one 1), and a P1 node couples to
+       * its edge neighbours only (about 14 in 3-D, 26 for Q1).
+       */
+      bool simplex = false;
+      /**
+       * Simplex meshes: the mean length of the cell edges divided by the
+       * spacing of a cubic lattice of the same vertex density,
+       * (measure / n_vertices)^(1/dim). pg's horizons are 'Horizon factor'
+       * times the mean edge length at a particle, and the estimate counts
+       * lattice points: a horizon of f edges spans f x this lattice
+       * spacings. 1 for hypercube meshes (their edges are the spacing).
+       */
+      double edge_to_spacing = 1.;
+      /**
+       * Simplex meshes: the mean number of vertices joined to a vertex by a
+       * cell edge (2 x edges / vertices); a P1 row has this plus one node.
+       * 0 for hypercube meshes (a Q1 row has 3^dim nodes).
+       */
+      double edge_neighbours = 0;
     };
 
     /**
@@ -43,7 +65,13 @@ namespace pg
     /**
      * The size after 'Global refinement' of the coarse mesh
      * @p coarse read from a file: cells x 2^(dim r), and about as many
-     * vertices plus those of the refined surface.
+     * vertices plus those of the refined surface (quadrilaterals,
+     * hexahedra), or the vertices x 2^(dim r) (triangles, tetrahedra:
+     * a refinement adds one vertex per edge, about 3 (2-D) and 7 (3-D) per
+     * vertex, where a hypercube mesh gains one per new cell). For simplex
+     * meshes also the edge counts of MeshSize (of the coarse mesh:
+     * refinement halves every edge and keeps their ratios about the same)
+     * and the spacing from the vertices, (measure / n_vertices)^(1/dim).
      */
     template <int dim>
     MeshSize
