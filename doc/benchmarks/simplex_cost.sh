@@ -12,8 +12,9 @@
 # (mesh, particles and families, shape functions, VC), assembly and solve
 # per Newton step, Newton steps, CG iterations, matrix nonzeros per row,
 # mean family size, peak memory (/usr/bin/time, maximum resident set size).
-# Writes doc/benchmarks/simplex_cost/results.txt (ONLY=<run> one run:
-# "tets FEM", "tets PG", "hex FEM" or "hex PG"; appends).
+# Appends to doc/benchmarks/simplex_cost/results.txt (ONLY=<run> one run:
+# "tets FEM", "tets PG", "hex FEM" or "hex PG"). H=0.82 N=44: about 2.4 x
+# 10^4 particles.
 # Usage (from the repository root, Release build):
 #   sh doc/benchmarks/simplex_cost.sh build-release/applications/pg_solve/pg_solve
 set -e
@@ -24,7 +25,7 @@ OUT=doc/benchmarks/simplex_cost
 WORK=${WORK:-$(mktemp -d)}
 mkdir -p "$OUT"
 RESULTS="$OUT/results.txt"
-[ -n "$ONLY" ] || echo "# mesh | method | particles | DoFs | Newton steps | CG iterations | mesh s | setup s | shape functions s | VC s | assembly s | solve s | total s | wall s | peak MB | nonzeros per row | mean family | corner u_y" > "$RESULTS"
+[ -f "$RESULTS" ] || echo "# mesh | method | particles | DoFs | Newton steps | CG iterations | mesh s | setup s | shape functions s | VC s | assembly s | solve s | total s | wall s | peak MB | nonzeros per row | mean family | corner u_y | VC solve (iterations)" > "$RESULTS"
 
 MESH_FILE="$WORK/cook_tets_h$H.msh"
 if [ ! -f "$MESH_FILE" ]; then
@@ -76,12 +77,14 @@ t = s["timing"]
 c = s.get("assembly_cost", {})
 family = re.search(r"family size: +min \d+, mean ([0-9.]+)", log)
 particles = s["n_particles"] if s["n_particles"] > 0 else s["n_dofs"] // 3
-print("%s | %s | %d | %d | %d | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %.0f | %.1f | %s | %.6f" % (
+vc = s.get("vc_solve", {})
+print("%s | %s | %d | %d | %d | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s | %.0f | %.1f | %s | %.6f | %s (%s)" % (
     sys.argv[4], sys.argv[5], particles, s["n_dofs"], s["newton_iterations"],
     c.get("linear_iterations", 0), t["mesh"], t["setup"],
     t.get("shape_functions", 0.), t.get("vc", 0.), t["assembly"], t["solve"],
     t["total"], wall, int(kb) / 1024., s["matrix_nonzeros"] / s["n_dofs"],
-    family.group(1) if family else "0", s["points"]["corner"][1]))
+    family.group(1) if family else "0", s["points"]["corner"][1],
+    vc.get("solver", "-"), vc.get("iterations", "-")))
 END
   else
     echo "$1 | $2 | failed: $(tail -n 3 "$WORK/$name.log" | tr '\n' ' ')" >> "$RESULTS"

@@ -544,14 +544,16 @@ namespace pg
 
       // simplices: the spacing of the vertex density, and the edges
       size.spacing = std::pow(volume / size.n_vertices, 1. / dim);
-      double       edge_length = 0;
-      unsigned int n_edges     = 0;
-      for (auto line = coarse.begin_active_line(); line != coarse.end_line();
-           ++line)
-        {
-          edge_length += line->measure();
-          ++n_edges;
-        }
+      double                 edge_length = 0;
+      unsigned int           n_edges     = 0;
+      std::set<unsigned int> counted;
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const unsigned int l : cell->line_indices())
+          if (counted.insert(cell->line(l)->index()).second)
+            {
+              edge_length += cell->line(l)->measure();
+              ++n_edges;
+            }
       if (n_edges > 0 && n_coarse_vertices > 0)
         {
           const double coarse_spacing =
