@@ -23,6 +23,7 @@ H=${H:-0.49}
 N=${N:-72}
 OUT=doc/benchmarks/simplex_cost
 WORK=${WORK:-$(mktemp -d)}
+mkdir -p "$WORK"
 mkdir -p "$OUT"
 RESULTS="$OUT/results.txt"
 [ -f "$RESULTS" ] || echo "# mesh | method | particles | DoFs | Newton steps | CG iterations | mesh s | setup s | shape functions s | VC s | assembly s | solve s | total s | wall s | peak MB | nonzeros per row | mean family | corner u_y | VC solve (iterations)" > "$RESULTS"
