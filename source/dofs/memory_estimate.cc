@@ -91,11 +91,12 @@ namespace pg
       }
     else
       {
-        // the horizon in units of the lattice spacing (the horizon factor
-        // multiplies the mean edge length, longer than the lattice
-        // spacing on simplex meshes)
-        double horizon = (discretization.horizon_factor + horizon_extra) *
-                         size.edge_to_spacing;
+        // the horizon in units of the spacing (on simplex meshes the mean
+        // edge is a little longer than the lattice spacing: a tetrahedral
+        // family at 1.51 holds 1.2 to 1.3 times the lattice count,
+        // dofs/memory_estimate_simplex_01, doc/benchmarks/simplex_cost.md;
+        // within the accuracy of the estimate)
+        double horizon = discretization.horizon_factor + horizon_extra;
         if (discretization.horizon > 0. && size.spacing > 0.)
           horizon = discretization.horizon / size.spacing + horizon_extra;
         if (discretization.nearest_neighbours > 0)

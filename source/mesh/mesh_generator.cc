@@ -516,21 +516,8 @@ namespace pg
       size.n_cells =
         size.n_coarse_cells * std::pow(refined, static_cast<double>(dim));
       const double n_coarse_vertices = coarse.n_used_vertices();
-      size.simplex =
-        coarse.n_active_cells() > 0 && !coarse.all_reference_cells_are_hyper_cube();
-      if (parameters.global_refinement == 0)
-        size.n_vertices = n_coarse_vertices;
-      else if (size.simplex)
-        // a refinement adds the midpoint of every edge: about 3 (2-D) and
-        // 6 to 7 (3-D) vertices per vertex, at most 2^dim - 1 in the limit
-        size.n_vertices =
-          n_coarse_vertices * std::pow(refined, static_cast<double>(dim));
-      else
-        // each refinement adds about one vertex per new cell, plus those of
-        // the refined boundary (an upper bound of the exact count)
-        size.n_vertices =
-          size.n_cells +
-          n_coarse_vertices * std::pow(refined, static_cast<double>(dim - 1));
+      size.simplex                   = coarse.n_active_cells() > 0 &&
+                     !coarse.all_reference_cells_are_hyper_cube();
       // (GridTools::volume() integrates with QGauss: hypercubes only)
       double volume = 0;
       for (const auto &cell : coarse.active_cell_iterators())
@@ -538,29 +525,36 @@ namespace pg
       volume = std::abs(volume);
       if (!size.simplex)
         {
+          // each refinement adds about one vertex per new cell, plus those
+          // of the refined boundary (an upper bound of the exact count)
+          size.n_vertices =
+            parameters.global_refinement == 0 ?
+              n_coarse_vertices :
+              size.n_cells + n_coarse_vertices *
+                               std::pow(refined, static_cast<double>(dim - 1));
           size.spacing = std::pow(volume / size.n_cells, 1. / dim);
           return size;
         }
 
-      // simplices: the spacing of the vertex density, and the edges
-      size.spacing = std::pow(volume / size.n_vertices, 1. / dim);
-      double                 edge_length = 0;
-      unsigned int           n_edges     = 0;
+      // simplices: the edges of the coarse mesh
+      unsigned int           n_edges = 0;
       std::set<unsigned int> counted;
       for (const auto &cell : coarse.active_cell_iterators())
         for (const unsigned int l : cell->line_indices())
           if (counted.insert(cell->line(l)->index()).second)
-            {
-              edge_length += cell->line(l)->measure();
-              ++n_edges;
-            }
-      if (n_edges > 0 && n_coarse_vertices > 0)
-        {
-          const double coarse_spacing =
-            std::pow(volume / n_coarse_vertices, 1. / dim);
-          size.edge_to_spacing = edge_length / n_edges / coarse_spacing;
-          size.edge_neighbours = 2. * n_edges / n_coarse_vertices;
-        }
+            ++n_edges;
+      // a refinement adds the midpoint of every edge: exact for one
+      // refinement, and the vertices grow by 2^dim per refinement in the
+      // limit (the edges per vertex stay about the same)
+      const double cells_per_cell = std::pow(2., dim);
+      size.n_vertices             = n_coarse_vertices +
+                        n_edges *
+                          (std::pow(refined, static_cast<double>(dim)) - 1.) /
+                          (cells_per_cell - 1.);
+      // the spacing of the vertex density
+      size.spacing = std::pow(volume / size.n_vertices, 1. / dim);
+      if (n_coarse_vertices > 0)
+        size.edge_neighbours = 2. * n_edges / n_coarse_vertices;
       return size;
     }
 

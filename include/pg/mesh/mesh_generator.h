@@ -36,15 +36,6 @@ namespace pg
        */
       bool simplex = false;
       /**
-       * Simplex meshes: the mean length of the cell edges divided by the
-       * spacing of a cubic lattice of the same vertex density,
-       * (measure / n_vertices)^(1/dim). pg's horizons are 'Horizon factor'
-       * times the mean edge length at a particle, and the estimate counts
-       * lattice points: a horizon of f edges spans f x this lattice
-       * spacings. 1 for hypercube meshes (their edges are the spacing).
-       */
-      double edge_to_spacing = 1.;
-      /**
        * Simplex meshes: the mean number of vertices joined to a vertex by a
        * cell edge (2 x edges / vertices); a P1 row has this plus one node.
        * 0 for hypercube meshes (a Q1 row has 3^dim nodes).
@@ -66,12 +57,14 @@ namespace pg
      * The size after 'Global refinement' of the coarse mesh
      * @p coarse read from a file: cells x 2^(dim r), and about as many
      * vertices plus those of the refined surface (quadrilaterals,
-     * hexahedra), or the vertices x 2^(dim r) (triangles, tetrahedra:
-     * a refinement adds one vertex per edge, about 3 (2-D) and 7 (3-D) per
-     * vertex, where a hypercube mesh gains one per new cell). For simplex
-     * meshes also the edge counts of MeshSize (of the coarse mesh:
-     * refinement halves every edge and keeps their ratios about the same)
-     * and the spacing from the vertices, (measure / n_vertices)^(1/dim).
+     * hexahedra), or for triangles and tetrahedra the vertices plus the
+     * edges x (2^(dim r) - 1) / (2^dim - 1) (a refinement adds one vertex
+     * per edge, about 3 (2-D) and 6 to 7 (3-D) per vertex, where a
+     * hypercube mesh gains one per new cell; exact for r = 1). For simplex
+     * meshes also the edge neighbours of MeshSize (of the coarse mesh:
+     * refinement keeps the edges per vertex about the same) and the
+     * spacing from the vertices, (measure / n_vertices)^(1/dim), the
+     * spacing of a cubic lattice of the same density.
      */
     template <int dim>
     MeshSize
