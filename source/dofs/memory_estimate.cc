@@ -21,6 +21,10 @@ namespace pg
 
     /** Measured bytes per DoF (doc/memory.md). */
     constexpr double q1_bytes_per_dof[2] = {1.66e3, 4.39e3};
+    /** ... of P1 on triangles (not measured: Q1's) and tetrahedra (the 3-D
+     * Cook membrane at 299,859 DoFs, doc/benchmarks/simplex_cost.md; Q1
+     * measured 4.33 kB in the same run). */
+    constexpr double p1_bytes_per_dof[2] = {1.66e3, 4.63e3};
     /** ... of PG everywhere at 'Horizon factor = 1.51'. */
     constexpr double pg_bytes_per_dof[2]  = {7.24e3, 13.47e3};
     constexpr double pg_reference_horizon = 1.51;
@@ -76,10 +80,22 @@ namespace pg
         estimate.family_size      = 0;
         estimate.nonzeros_per_row = std::pow(3., dim) * fields;
         estimate.bytes_per_dof    = q1_bytes_per_dof[dim - 2];
+        if (size.simplex && size.edge_neighbours > 0)
+          {
+            // P1: a node couples to its edge neighbours only, but the mesh
+            // has 5 to 6 cells per vertex (3-D): the bytes per DoF are
+            // those measured on tetrahedra
+            estimate.nonzeros_per_row = (size.edge_neighbours + 1.) * fields;
+            estimate.bytes_per_dof    = p1_bytes_per_dof[dim - 2];
+          }
       }
     else
       {
-        // the horizon in units of the spacing
+        // the horizon in units of the spacing (on simplex meshes the mean
+        // edge is a little longer than the lattice spacing: a tetrahedral
+        // family at 1.51 holds 1.2 to 1.3 times the lattice count,
+        // dofs/memory_estimate_simplex_01, doc/benchmarks/simplex_cost.md;
+        // within the accuracy of the estimate)
         double horizon = discretization.horizon_factor + horizon_extra;
         if (discretization.horizon > 0. && size.spacing > 0.)
           horizon = discretization.horizon / size.spacing + horizon_extra;

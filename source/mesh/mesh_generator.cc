@@ -529,6 +529,10 @@ namespace pg
                               (n[0] + 1.) * n[1] * n[2];
           }
         size.spacing = std::pow(measure / size.n_vertices, 1. / dim);
+        // for the P1 rows of the memory estimate: 6 edge neighbours per
+        // vertex on average in 2-D (Euler), about 14 in 3-D
+        size.simplex         = true;
+        size.edge_neighbours = (dim == 2 ? 6. : 14.);
       }
 
 
@@ -654,28 +658,57 @@ namespace pg
       size.n_coarse_cells = coarse.n_active_cells();
       size.n_cells =
         size.n_coarse_cells * std::pow(refined, static_cast<double>(dim));
-      // each refinement adds about one vertex per new cell, plus those of
-      // the refined boundary (an upper bound of the exact count)
       const double n_coarse_vertices = coarse.n_used_vertices();
-      size.n_vertices =
-        parameters.global_refinement == 0 ?
-          n_coarse_vertices :
-          size.n_cells +
-            n_coarse_vertices * std::pow(refined, static_cast<double>(dim - 1));
+      size.simplex                   = coarse.n_active_cells() > 0 &&
+                     !coarse.all_reference_cells_are_hyper_cube();
       // (GridTools::volume() integrates with QGauss: hypercubes only)
       double volume = 0;
       for (const auto &cell : coarse.active_cell_iterators())
         volume += cell->measure();
-      size.spacing = std::pow(std::abs(volume) / size.n_cells, 1. / dim);
-      if (parameters.cells == "simplices" &&
-          coarse.all_reference_cells_are_hyper_cube())
+      volume = std::abs(volume);
+      if (!size.simplex)
         {
-          // each cell gives 8 (24) simplices, and there are about 4 times
-          // as many vertices (edge midpoints and centres; face centres)
-          size.n_cells *= (dim == 2 ? 8. : 24.);
-          size.n_vertices *= (dim == 2 ? 4. : 4.);
-          size.spacing = std::pow(std::abs(volume) / size.n_vertices, 1. / dim);
+          // each refinement adds about one vertex per new cell, plus those
+          // of the refined boundary (an upper bound of the exact count)
+          size.n_vertices =
+            parameters.global_refinement == 0 ?
+              n_coarse_vertices :
+              size.n_cells + n_coarse_vertices *
+                               std::pow(refined, static_cast<double>(dim - 1));
+          size.spacing = std::pow(volume / size.n_cells, 1. / dim);
+          if (parameters.cells == "simplices")
+            {
+              // 'Cells = simplices': each cell gives 8 (24) simplices, and
+              // there are about 4 times as many vertices (edge midpoints
+              // and centres; face centres)
+              size.n_cells *= (dim == 2 ? 8. : 24.);
+              size.n_vertices *= 4.;
+              size.spacing = std::pow(volume / size.n_vertices, 1. / dim);
+              size.simplex = true;
+              size.edge_neighbours = (dim == 2 ? 6. : 14.);
+            }
+          return size;
         }
+
+      // simplices: the edges of the coarse mesh
+      unsigned int           n_edges = 0;
+      std::set<unsigned int> counted;
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const unsigned int l : cell->line_indices())
+          if (counted.insert(cell->line(l)->index()).second)
+            ++n_edges;
+      // a refinement adds the midpoint of every edge: exact for one
+      // refinement, and the vertices grow by 2^dim per refinement in the
+      // limit (the edges per vertex stay about the same)
+      const double cells_per_cell = std::pow(2., dim);
+      size.n_vertices             = n_coarse_vertices +
+                        n_edges *
+                          (std::pow(refined, static_cast<double>(dim)) - 1.) /
+                          (cells_per_cell - 1.);
+      // the spacing of the vertex density
+      size.spacing = std::pow(volume / size.n_vertices, 1. / dim);
+      if (n_coarse_vertices > 0)
+        size.edge_neighbours = 2. * n_edges / n_coarse_vertices;
       return size;
     }
 

@@ -29,6 +29,19 @@ namespace pg
       double spacing = 0;
       /** Cells before refinement: of 'Subdivisions', or of the file. */
       double n_coarse_cells = 0;
+      /**
+       * True for a mesh file of triangles or tetrahedra. Their counts
+       * differ from those of hypercubes: a tetrahedral mesh has about 5 to
+       * 6 cells per vertex (a hexahedral one 1), and a P1 node couples to
+       * its edge neighbours only (about 14 in 3-D, 26 for Q1).
+       */
+      bool simplex = false;
+      /**
+       * Simplex meshes: the mean number of vertices joined to a vertex by a
+       * cell edge (2 x edges / vertices); a P1 row has this plus one node.
+       * 0 for hypercube meshes (a Q1 row has 3^dim nodes).
+       */
+      double edge_neighbours = 0;
     };
 
     /**
@@ -44,7 +57,15 @@ namespace pg
     /**
      * The size after 'Global refinement' of the coarse mesh
      * @p coarse read from a file: cells x 2^(dim r), and about as many
-     * vertices plus those of the refined surface.
+     * vertices plus those of the refined surface (quadrilaterals,
+     * hexahedra), or for triangles and tetrahedra the vertices plus the
+     * edges x (2^(dim r) - 1) / (2^dim - 1) (a refinement adds one vertex
+     * per edge, about 3 (2-D) and 6 to 7 (3-D) per vertex, where a
+     * hypercube mesh gains one per new cell; exact for r = 1). For simplex
+     * meshes also the edge neighbours of MeshSize (of the coarse mesh:
+     * refinement keeps the edges per vertex about the same) and the
+     * spacing from the vertices, (measure / n_vertices)^(1/dim), the
+     * spacing of a cubic lattice of the same density.
      */
     template <int dim>
     MeshSize
