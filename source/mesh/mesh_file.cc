@@ -582,6 +582,59 @@ namespace pg
 
 
 
+    template <int dim>
+    void
+    refine_node_sets(
+      const Triangulation<dim>                         &triangulation,
+      std::map<std::string, std::vector<unsigned int>> &node_sets)
+    {
+      for (auto &[name, vertices] : node_sets)
+        {
+          std::vector<bool> in(triangulation.n_vertices(), false);
+          for (const unsigned int v : vertices)
+            in[v] = true;
+          const auto all_in = [&](const auto &object) {
+            for (const unsigned int v : object->vertex_indices())
+              if (!in[object->vertex_index(v)])
+                return false;
+            return true;
+          };
+          for (unsigned int level = 0; level + 1 < triangulation.n_levels();
+               ++level)
+            for (const auto &cell :
+                 triangulation.cell_iterators_on_level(level))
+              if (cell->has_children())
+                {
+                  for (const unsigned int l : cell->line_indices())
+                    if (cell->line(l)->has_children() && all_in(cell->line(l)))
+                      in[cell->line(l)->child(0)->vertex_index(1)] = true;
+                  if constexpr (dim == 3)
+                    for (const unsigned int f : cell->face_indices())
+                      if (cell->face(f)->n_vertices() == 4 &&
+                          cell->face(f)->has_children() &&
+                          all_in(cell->face(f)))
+                        in[cell->face(f)->child(0)->vertex_index(3)] = true;
+                  if (cell->reference_cell().is_hyper_cube() && all_in(cell))
+                    in[cell->child(0)->vertex_index(
+                      GeometryInfo<dim>::vertices_per_cell - 1)] = true;
+                }
+          vertices.clear();
+          for (unsigned int v = 0; v < in.size(); ++v)
+            if (in[v])
+              vertices.push_back(v);
+        }
+    }
+
+
+
+    template void
+    refine_node_sets<2>(const Triangulation<2> &,
+                        std::map<std::string, std::vector<unsigned int>> &);
+    template void
+    refine_node_sets<3>(const Triangulation<3> &,
+                        std::map<std::string, std::vector<unsigned int>> &);
+
+
     template void
     read_mesh_file<2>(const Parameters::Geometry &,
                       Triangulation<2> &,

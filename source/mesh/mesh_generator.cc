@@ -2,6 +2,7 @@
 #include <pg/mesh/mesh_file.h>
 #include <pg/mesh/mesh_generator.h>
 #include <pg/mesh/meshfree_region.h>
+#include <pg/mesh/simplex_split.h>
 
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/point.h>
@@ -447,146 +448,6 @@ namespace pg
               }
       }
 
-      /**
-       * 'Cells = simplices': split the quadrilaterals (hexahedra) of
-       * @p hypercubes into 8 triangles (24 tetrahedra) each with
-       * GridGenerator::convert_hypercube_to_simplex_mesh(), into the empty
-       * @p triangulation. deal.II 9.4's function takes the active cells of a
-       * refined mesh and keeps the material and boundary ids, but puts the
-       * new vertices (edge midpoints and cell centres in 2-D, face centres
-       * in 3-D) at the mean of the old ones, ignoring the manifolds: the
-       * new vertices of a curved boundary (the hole of the plate with a
-       * hole) are moved here onto it (the manifold's centre of the face).
-       * It copies the manifold ids but not the manifolds; the simplices are
-       * straight P1 cells (pg/mesh/linear_cells.h) that are not refined
-       * again, so every manifold id is reset to flat.
-       */
-      template <int dim>
-      void
-      split_into_simplices(const Triangulation<dim> &hypercubes,
-                           Triangulation<dim>       &triangulation)
-      {
-        // the straight and the curved centres of the curved boundary faces
-        std::vector<std::pair<Point<dim>, Point<dim>>> curved;
-        for (const auto &cell : hypercubes.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() &&
-                face->manifold_id() != numbers::flat_manifold_id)
-              curved.emplace_back(face->center(), face->center(true));
-
-        GridGenerator::convert_hypercube_to_simplex_mesh(hypercubes,
-                                                         triangulation);
-        triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
-
-        if (curved.empty())
-          return;
-        std::vector<bool> moved(triangulation.n_vertices(), false);
-        for (const auto &cell : triangulation.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary())
-              for (const unsigned int v : face->vertex_indices())
-                {
-                  const unsigned int i = face->vertex_index(v);
-                  if (moved[i])
-                    continue;
-                  moved[i] = true;
-                  for (const auto &[straight, on_manifold] : curved)
-                    if (face->vertex(v).distance(straight) <=
-                        1e-10 * face->diameter())
-                      {
-                        face->vertex(v) = on_manifold;
-                        break;
-                      }
-                }
-      }
-
-
-
-      /**
-       * The size of @p size split into simplices: 8 triangles per
-       * quadrilateral and a vertex at each edge midpoint and cell centre of
-       * the @p n cells per direction (a grid of 2 n + 1 vertices per
-       * direction); 24 tetrahedra per hexahedron and a vertex at each face
-       * centre. The spacing is that of the vertices.
-       */
-      template <int dim>
-      void
-      predict_split(const std::vector<double> &n,
-                    const double               measure,
-                    MeshSize                  &size)
-      {
-        if (dim == 2)
-          {
-            size.n_cells    = 8. * n[0] * n[1];
-            size.n_vertices = (2. * n[0] + 1.) * (2. * n[1] + 1.);
-          }
-        else
-          {
-            size.n_cells    = 24. * n[0] * n[1] * n[2];
-            size.n_vertices = (n[0] + 1.) * (n[1] + 1.) * (n[2] + 1.) +
-                              n[0] * n[1] * (n[2] + 1.) +
-                              n[0] * (n[1] + 1.) * n[2] +
-                              (n[0] + 1.) * n[1] * n[2];
-          }
-        size.spacing = std::pow(measure / size.n_vertices, 1. / dim);
-        // for the P1 rows of the memory estimate: 6 edge neighbours per
-        // vertex on average in 2-D (Euler), about 14 in 3-D
-        size.simplex         = true;
-        size.edge_neighbours = (dim == 2 ? 6. : 14.);
-      }
-
-
-      /**
-       * Extend the node sets to the vertices that refinement added: the
-       * midpoint of a line, the centre of a quadrilateral face and of a
-       * hexahedron belong to a node set if all the vertices of the line,
-       * face or cell do (level by level, so that the sets follow several
-       * refinements). A node set on a face of the coarse mesh then holds
-       * every vertex of that face of the refined mesh.
-       */
-      template <int dim>
-      void
-      refine_node_sets(
-        const Triangulation<dim>                         &triangulation,
-        std::map<std::string, std::vector<unsigned int>> &node_sets)
-      {
-        for (auto &[name, vertices] : node_sets)
-          {
-            std::vector<bool> in(triangulation.n_vertices(), false);
-            for (const unsigned int v : vertices)
-              in[v] = true;
-            const auto all_in = [&](const auto &object) {
-              for (const unsigned int v : object->vertex_indices())
-                if (!in[object->vertex_index(v)])
-                  return false;
-              return true;
-            };
-            for (unsigned int level = 0; level + 1 < triangulation.n_levels();
-                 ++level)
-              for (const auto &cell :
-                   triangulation.cell_iterators_on_level(level))
-                if (cell->has_children())
-                  {
-                    for (const unsigned int l : cell->line_indices())
-                      if (cell->line(l)->has_children() &&
-                          all_in(cell->line(l)))
-                        in[cell->line(l)->child(0)->vertex_index(1)] = true;
-                    if constexpr (dim == 3)
-                      for (const unsigned int f : cell->face_indices())
-                        if (cell->face(f)->n_vertices() == 4 &&
-                            cell->face(f)->has_children() &&
-                            all_in(cell->face(f)))
-                          in[cell->face(f)->child(0)->vertex_index(3)] = true;
-                    if (cell->reference_cell().is_hyper_cube() && all_in(cell))
-                      in[cell->child(0)->vertex_index(
-                        GeometryInfo<dim>::vertices_per_cell - 1)] = true;
-                  }
-            vertices.clear();
-            for (unsigned int v = 0; v < in.size(); ++v)
-              if (in[v])
-                vertices.push_back(v);
-          }
-      }
     } // namespace
 
 
@@ -642,7 +503,7 @@ namespace pg
         size.n_cells / std::pow(refined, static_cast<double>(dim));
       size.spacing = std::pow(measure / size.n_cells, 1. / dim);
       if (parameters.cells == "simplices")
-        predict_split<dim>(n, measure, size);
+        predict_split_size<dim>(n, measure, size);
       return size;
     }
 

@@ -34,6 +34,21 @@ namespace pg
       Triangulation<dim>                               &triangulation,
       std::string                                      *notes,
       std::map<std::string, std::vector<unsigned int>> *node_sets = nullptr);
+
+    /**
+     * Extend the node sets of a mesh file (vertex indices of the coarse
+     * mesh) to the vertices that the refinement of @p triangulation added:
+     * the midpoint of a line, the centre of a quadrilateral face and of a
+     * hexahedron belong to a node set if all the vertices of the line,
+     * face or cell do (level by level, so that the sets follow several
+     * refinements). A node set on a face of the coarse mesh then holds
+     * every vertex of that face of the refined mesh.
+     */
+    template <int dim>
+    void
+    refine_node_sets(
+      const Triangulation<dim>                         &triangulation,
+      std::map<std::string, std::vector<unsigned int>> &node_sets);
   } // namespace Mesh
 } // namespace pg
 
