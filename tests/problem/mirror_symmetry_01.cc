@@ -105,24 +105,6 @@ parameters(const Model       &model,
 
 
 
-/** max over the points and components |u - u_full| / max |u_full|. */
-double
-difference(const pg::RunSummary &run, const pg::RunSummary &full)
-{
-  double largest = 0, scale = 0;
-  for (unsigned int p = 0; p < full.points.size(); ++p)
-    for (unsigned int c = 0; c < full.points[p].second.size(); ++c)
-      {
-        largest = std::max(largest,
-                           std::abs(run.points[p].second[c] -
-                                    full.points[p].second[c]));
-        scale   = std::max(scale, std::abs(full.points[p].second[c]));
-      }
-  return largest / scale;
-}
-
-
-
 template <int dim>
 void
 compare(const std::string &formulation,
@@ -146,7 +128,7 @@ compare(const std::string &formulation,
         parameters<dim>(all[m], formulation, extra, "mirror", meshfree_region),
         screen);
       print_bound("  " + all[m].name + ": |u - u_full| / |u_full|",
-                  difference(run, full),
+                  point_difference(run, full),
                   bound);
     }
 }
@@ -166,7 +148,7 @@ constraint_treatment(const std::string &formulation)
                      screen);
   deallog << dim << "-D " << formulation << ", " << all.back().name
           << " with 'Symmetry treatment = constraint':" << std::endl;
-  print_rounded("  |u - u_full| / |u_full|", difference(cut, full), 2);
+  print_rounded("  |u - u_full| / |u_full|", point_difference(cut, full), 2);
 }
 
 

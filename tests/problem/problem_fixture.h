@@ -9,6 +9,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -66,6 +68,28 @@ run_problem(const std::string &parameters,
   pg::Problem<dim> problem(all, MPI_COMM_WORLD, screen, restart);
   problem.run();
   return problem.summary();
+}
+
+
+
+/**
+ * max over the 'Output/Points' and components |u - u_reference| / max
+ * |u_reference| of two runs with the same points (e.g. a symmetric part
+ * against the full body).
+ */
+inline double
+point_difference(const pg::RunSummary &run, const pg::RunSummary &reference)
+{
+  double largest = 0, scale = 0;
+  for (unsigned int p = 0; p < reference.points.size(); ++p)
+    for (unsigned int c = 0; c < reference.points[p].second.size(); ++c)
+      {
+        largest = std::max(largest,
+                           std::abs(run.points[p].second[c] -
+                                    reference.points[p].second[c]));
+        scale   = std::max(scale, std::abs(reference.points[p].second[c]));
+      }
+  return largest / scale;
 }
 
 #endif
