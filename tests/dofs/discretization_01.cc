@@ -14,6 +14,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include "../geometry_fixture.h"
 #include "../tests.h"
 
 #include <algorithm>
@@ -24,17 +25,6 @@
 
 namespace
 {
-  /** The Geometry parameters from the entries @p entries of its subsection. */
-  pg::Parameters::Geometry
-  geometry(const std::string &entries)
-  {
-    ParameterHandler prm;
-    pg::Parameters::Geometry::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Geometry\n" + entries + "end\n");
-    pg::Parameters::Geometry parameters;
-    parameters.parse_parameters(prm);
-    return parameters;
-  }
 
 
 
@@ -85,7 +75,8 @@ namespace
         const double       x_loaded,
         const Expected    &expected)
   {
-    pg::Discretization<dim> d(MPI_COMM_WORLD, geometry(geometry_entries));
+    pg::Discretization<dim> d(MPI_COMM_WORLD,
+                              geometry_parameters(geometry_entries));
     unsigned int            n_asked = 0;
     d.reinit(pg::parse_formulation_code(code),
              discretization_parameters(),
@@ -176,9 +167,10 @@ namespace
     deallog << "sample locations on [0,2] x [0,1], 8 x 4 cells, hole "
             << "(0.5,1) x (0,0.5)" << std::endl;
     pg::Discretization<2> d(MPI_COMM_WORLD,
-                            geometry("set Upper corner = 2, 1\n"
-                                     "set Subdivisions = 8, 4\n"
-                                     "set Hole = box 0.5,0 : 1,0.5\n"));
+                            geometry_parameters(
+                              "set Upper corner = 2, 1\n"
+                              "set Subdivisions = 8, 4\n"
+                              "set Hole = box 0.5,0 : 1,0.5\n"));
     d.reinit(pg::parse_formulation_code("FEM"),
              discretization_parameters(),
              cpd_parameters(),

@@ -16,6 +16,7 @@
 #include <deal.II/grid/grid_out.h>
 #include <deal.II/grid/tria.h>
 
+#include "../geometry_fixture.h"
 #include "../tests.h"
 
 #include <cmath>
@@ -26,16 +27,6 @@
 
 namespace
 {
-  pg::Parameters::Geometry
-  geometry(const std::string &entries)
-  {
-    ParameterHandler prm;
-    pg::Parameters::Geometry::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Geometry\n" + entries + "end\n");
-    pg::Parameters::Geometry parameters;
-    parameters.parse_parameters(prm);
-    return parameters;
-  }
 
 
 
@@ -57,7 +48,7 @@ namespace
   void
   compare(const std::string &name, const std::string &entries)
   {
-    const pg::Parameters::Geometry g = geometry(entries);
+    const pg::Parameters::Geometry g = geometry_parameters(entries);
     Triangulation<dim>             triangulation;
     pg::Mesh::MeshSize             predicted;
     bool                           called = false;
@@ -131,9 +122,9 @@ main()
         std::make_tuple("BCPBG Unl TL", 4, 1264192 * 1024.)})
     {
       const pg::Parameters::Geometry g =
-        geometry("set Mesh = cook membrane\nset Subdivisions = 8\n"
-                 "set Global refinement = " +
-                 std::to_string(refinement) + "\n");
+        geometry_parameters("set Mesh = cook membrane\nset Subdivisions = 8\n"
+                            "set Global refinement = " +
+                            std::to_string(refinement) + "\n");
       const pg::MemoryEstimate e =
         pg::estimate_memory<2>(pg::Mesh::predict_mesh_size<2>(g),
                                pg::parse_formulation_code(formulation),
@@ -153,7 +144,7 @@ main()
   // the typo of issue 45 and its override
   {
     pg::Parameters::Geometry g =
-      geometry("set Subdivisions = 200000, 100000\n");
+      geometry_parameters("set Subdivisions = 200000, 100000\n");
     const pg::Mesh::MeshSize size = pg::Mesh::predict_mesh_size<2>(g);
     const pg::MemoryEstimate e =
       pg::estimate_memory<2>(size,

@@ -30,6 +30,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include "../geometry_fixture.h"
 #include "../tests.h"
 
 #include <algorithm>
@@ -42,17 +43,6 @@
 namespace
 {
   constexpr int dim = 3;
-
-  pg::Parameters::Geometry
-  geometry(const std::string &entries)
-  {
-    ParameterHandler prm;
-    pg::Parameters::Geometry::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Geometry\n" + entries + "end\n");
-    pg::Parameters::Geometry parameters;
-    parameters.parse_parameters(prm);
-    return parameters;
-  }
 
 
 
@@ -75,7 +65,7 @@ namespace
   build(const std::string &entries, Triangulation<dim> &triangulation)
   {
     pg::Mesh::MeshSize predicted;
-    pg::Mesh::create_mesh(geometry(entries),
+    pg::Mesh::create_mesh(geometry_parameters(entries),
                           triangulation,
                           nullptr,
                           [&](const pg::Mesh::MeshSize &size) {

@@ -14,6 +14,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 
+#include "../geometry_fixture.h"
 #include "../tests.h"
 
 #include <fstream>
@@ -26,15 +27,9 @@ namespace
   pg::Parameters::Geometry
   geometry(const std::string &file, const unsigned int refinement = 0)
   {
-    ParameterHandler prm;
-    pg::Parameters::Geometry::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Geometry\n  set Mesh = file\n"
-                                "  set File name = " +
-                                file + "\n  set Global refinement = " +
-                                std::to_string(refinement) + "\nend\n");
-    pg::Parameters::Geometry parameters;
-    parameters.parse_parameters(prm);
-    return parameters;
+    return geometry_parameters(
+      "  set Mesh = file\n  set File name = " + file +
+      "\n  set Global refinement = " + std::to_string(refinement) + "\n");
   }
 
 

@@ -17,6 +17,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
+#include "../geometry_fixture.h"
 #include "../tests.h"
 
 #include <algorithm>
@@ -30,17 +31,6 @@
 
 namespace
 {
-  /** The Geometry parameters from the entries @p entries of its subsection. */
-  pg::Parameters::Geometry
-  geometry(const std::string &entries)
-  {
-    ParameterHandler prm;
-    pg::Parameters::Geometry::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Geometry\n" + entries + "end\n");
-    pg::Parameters::Geometry parameters;
-    parameters.parse_parameters(prm);
-    return parameters;
-  }
 
 
 
@@ -124,9 +114,9 @@ namespace
             << "refinement" << std::endl;
     {
       Triangulation<2> triangulation;
-      pg::Mesh::create_mesh(geometry("set Upper corner = 2, 1\n"
-                                     "set Subdivisions = 2, 1\n"
-                                     "set Global refinement = 1\n"),
+      pg::Mesh::create_mesh(geometry_parameters("set Upper corner = 2, 1\n"
+                                                "set Subdivisions = 2, 1\n"
+                                                "set Global refinement = 1\n"),
                             triangulation);
       print_mesh(triangulation);
     }
@@ -135,10 +125,10 @@ namespace
             << "refinement" << std::endl;
     {
       Triangulation<3> triangulation;
-      pg::Mesh::create_mesh(geometry("set Lower corner = 0, 0, 0\n"
-                                     "set Upper corner = 1, 2, 3\n"
-                                     "set Subdivisions = 1\n"
-                                     "set Global refinement = 1\n"),
+      pg::Mesh::create_mesh(geometry_parameters("set Lower corner = 0, 0, 0\n"
+                                                "set Upper corner = 1, 2, 3\n"
+                                                "set Subdivisions = 1\n"
+                                                "set Global refinement = 1\n"),
                             triangulation);
       print_mesh(triangulation);
     }
@@ -151,18 +141,19 @@ namespace
             << "1,1,1 : 2,2,2 (3-D), 3 subdivisions" << std::endl;
     {
       Triangulation<2> triangulation;
-      pg::Mesh::create_mesh(geometry("set Upper corner = 3, 3\n"
-                                     "set Subdivisions = 3\n"
-                                     "set Hole = box 1,1 : 2,2\n"),
+      pg::Mesh::create_mesh(geometry_parameters("set Upper corner = 3, 3\n"
+                                                "set Subdivisions = 3\n"
+                                                "set Hole = box 1,1 : 2,2\n"),
                             triangulation);
       print_mesh(triangulation);
     }
     {
       Triangulation<3> triangulation;
-      pg::Mesh::create_mesh(geometry("set Lower corner = 0, 0, 0\n"
-                                     "set Upper corner = 3, 3, 3\n"
-                                     "set Subdivisions = 3\n"
-                                     "set Hole = box 1,1,1 : 2,2,2\n"),
+      pg::Mesh::create_mesh(geometry_parameters(
+                              "set Lower corner = 0, 0, 0\n"
+                              "set Upper corner = 3, 3, 3\n"
+                              "set Subdivisions = 3\n"
+                              "set Hole = box 1,1,1 : 2,2,2\n"),
                             triangulation);
       print_mesh(triangulation);
     }
@@ -177,9 +168,9 @@ namespace
             << "edges 44, 16, sqrt(4240) = 65.115282, sqrt(2560) = 50.596443)"
             << std::endl;
     Triangulation<2> triangulation;
-    pg::Mesh::create_mesh(geometry("set Mesh = cook membrane\n"
-                                   "set Subdivisions = 2\n"
-                                   "set Global refinement = 1\n"),
+    pg::Mesh::create_mesh(geometry_parameters("set Mesh = cook membrane\n"
+                                              "set Subdivisions = 2\n"
+                                              "set Global refinement = 1\n"),
                           triangulation);
     print_mesh(triangulation);
     print_bound("|area - 1440|",
@@ -190,9 +181,9 @@ namespace
             << "(volume 14400; faces 440, 160, 651.15282, 505.96443, 1440, "
             << "1440)" << std::endl;
     Triangulation<3> triangulation_3d;
-    pg::Mesh::create_mesh(geometry("set Mesh = cook membrane\n"
-                                   "set Subdivisions = 4, 4, 2\n"
-                                   "set Thickness = 10\n"),
+    pg::Mesh::create_mesh(geometry_parameters("set Mesh = cook membrane\n"
+                                              "set Subdivisions = 4, 4, 2\n"
+                                              "set Thickness = 10\n"),
                           triangulation_3d);
     print_mesh(triangulation_3d);
     print_bound("|volume - 14400|",
@@ -213,11 +204,12 @@ namespace
         deallog << "plate with hole L = 4, R = 1, " << refinement
                 << " refinements" << std::endl;
         Triangulation<2> triangulation;
-        pg::Mesh::create_mesh(geometry("set Mesh = plate with hole\n"
-                                       "set Plate size = 4\n"
-                                       "set Hole radius = 1\n"
-                                       "set Global refinement = " +
-                                       std::to_string(refinement) + "\n"),
+        pg::Mesh::create_mesh(geometry_parameters("set Mesh = plate with hole\n"
+                                                  "set Plate size = 4\n"
+                                                  "set Hole radius = 1\n"
+                                                  "set Global refinement = " +
+                                                  std::to_string(refinement) +
+                                                  "\n"),
                               triangulation);
         print_mesh(triangulation);
         print_rounded("relative area error",
@@ -256,12 +248,16 @@ namespace
     const std::string entries = "set Subdivisions = 4\n"
                                 "set Global refinement = 1\n";
     Triangulation<2>  regular, seed_0, seed_0_again, seed_1;
-    pg::Mesh::create_mesh(geometry(entries), regular);
-    pg::Mesh::create_mesh(geometry(entries + "set Distortion = 0.3\n"), seed_0);
-    pg::Mesh::create_mesh(geometry(entries + "set Distortion = 0.3\n"),
+    pg::Mesh::create_mesh(geometry_parameters(entries), regular);
+    pg::Mesh::create_mesh(geometry_parameters(entries +
+                                              "set Distortion = 0.3\n"),
+                          seed_0);
+    pg::Mesh::create_mesh(geometry_parameters(entries +
+                                              "set Distortion = 0.3\n"),
                           seed_0_again);
-    pg::Mesh::create_mesh(geometry(entries + "set Distortion = 0.3\n" +
-                                   "set Random seed = 1\n"),
+    pg::Mesh::create_mesh(geometry_parameters(entries +
+                                              "set Distortion = 0.3\n" +
+                                              "set Random seed = 1\n"),
                           seed_1);
 
     deallog << "same seed, max vertex difference: "
@@ -299,7 +295,9 @@ namespace
 
     // The same mesh on a parallel::shared::Triangulation.
     parallel::shared::Triangulation<2> shared(MPI_COMM_WORLD);
-    pg::Mesh::create_mesh(geometry(entries + "set Distortion = 0.3\n"), shared);
+    pg::Mesh::create_mesh(geometry_parameters(entries +
+                                              "set Distortion = 0.3\n"),
+                          shared);
     deallog << "shared triangulation, max vertex difference to serial: "
             << max_vertex_difference(seed_0, shared) << std::endl;
 
@@ -309,8 +307,9 @@ namespace
                                    "set Upper corner = 1, 1, 1\n"
                                    "set Subdivisions = 2\n"
                                    "set Global refinement = 1\n";
-    pg::Mesh::create_mesh(geometry(entries_3d), regular_3d);
-    pg::Mesh::create_mesh(geometry(entries_3d + "set Distortion = 0.3\n"),
+    pg::Mesh::create_mesh(geometry_parameters(entries_3d), regular_3d);
+    pg::Mesh::create_mesh(geometry_parameters(entries_3d +
+                                              "set Distortion = 0.3\n"),
                           distorted_3d);
     print_rounded("max vertex shift / h",
                   max_vertex_difference(regular_3d, distorted_3d) * 4,
@@ -322,9 +321,9 @@ namespace
     deallog << "distortion 0.3 of the plate with hole, 2 refinements"
             << std::endl;
     Triangulation<2> plate;
-    pg::Mesh::create_mesh(geometry("set Mesh = plate with hole\n"
-                                   "set Global refinement = 2\n"
-                                   "set Distortion = 0.3\n"),
+    pg::Mesh::create_mesh(geometry_parameters("set Mesh = plate with hole\n"
+                                              "set Global refinement = 2\n"
+                                              "set Distortion = 0.3\n"),
                           plate);
     deallog << "all cell measures positive: "
             << (min_cell_measure(plate) > 0 ? "yes" : "no") << std::endl;
@@ -350,9 +349,10 @@ namespace
       grid_out.write_msh(original, out);
     }
     Triangulation<2> triangulation;
-    pg::Mesh::create_mesh(geometry("set Mesh = file\n"
-                                   "set File name = mesh_generator_01.msh\n"
-                                   "set Global refinement = 1\n"),
+    pg::Mesh::create_mesh(geometry_parameters(
+                            "set Mesh = file\n"
+                            "set File name = mesh_generator_01.msh\n"
+                            "set Global refinement = 1\n"),
                           triangulation);
     print_mesh(triangulation);
 
@@ -362,9 +362,10 @@ namespace
     }
     print_error("broken file", []() {
       Triangulation<2> triangulation;
-      pg::Mesh::create_mesh(geometry("set Mesh = file\n"
-                                     "set File name = "
-                                     "mesh_generator_01_broken.msh\n"),
+      pg::Mesh::create_mesh(geometry_parameters(
+                              "set Mesh = file\n"
+                              "set File name = "
+                              "mesh_generator_01_broken.msh\n"),
                             triangulation);
     });
   }
@@ -377,7 +378,8 @@ namespace
     deallog << "meshfree regions on [0,1]^2 with 4x4 cells; material id 1 "
             << "for x < 0.5, 2 for x > 0.5 and y > 0.75" << std::endl;
     Triangulation<2> triangulation;
-    pg::Mesh::create_mesh(geometry("set Subdivisions = 4\n"), triangulation);
+    pg::Mesh::create_mesh(geometry_parameters("set Subdivisions = 4\n"),
+                          triangulation);
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->center()[0] < 0.5)
         cell->set_material_id(1);
@@ -397,21 +399,23 @@ namespace
                                      "ball 0.5, 0.5 : 0.4"})
       deallog << "'" << region << "': "
               << count(pg::Mesh::mark_meshfree_cells(
-                   geometry("set Meshfree region = " + region + "\n"),
+                   geometry_parameters("set Meshfree region = " + region +
+                                       "\n"),
                    triangulation))
               << " of " << triangulation.n_active_cells() << std::endl;
 
     deallog << "meshfree regions on [0,1]^3 with 4x4x4 cells" << std::endl;
     Triangulation<3> triangulation_3d;
-    pg::Mesh::create_mesh(geometry("set Lower corner = 0, 0, 0\n"
-                                   "set Upper corner = 1, 1, 1\n"
-                                   "set Subdivisions = 4\n"),
+    pg::Mesh::create_mesh(geometry_parameters("set Lower corner = 0, 0, 0\n"
+                                              "set Upper corner = 1, 1, 1\n"
+                                              "set Subdivisions = 4\n"),
                           triangulation_3d);
     for (const std::string region :
          {"all", "box 0,0,0 : 0.5,0.5,1", "ball 0.5,0.5,0.5 : 0.25"})
       deallog << "'" << region << "': "
               << count(pg::Mesh::mark_meshfree_cells(
-                   geometry("set Meshfree region = " + region + "\n"),
+                   geometry_parameters("set Meshfree region = " + region +
+                                       "\n"),
                    triangulation_3d))
               << " of " << triangulation_3d.n_active_cells() << std::endl;
   }
@@ -424,36 +428,38 @@ namespace
     deallog << "errors" << std::endl;
     print_error("missing file", []() {
       Triangulation<2> triangulation;
-      pg::Mesh::create_mesh(geometry("set Mesh = file\n"
-                                     "set File name = no_such_mesh.msh\n"),
+      pg::Mesh::create_mesh(geometry_parameters(
+                              "set Mesh = file\n"
+                              "set File name = no_such_mesh.msh\n"),
                             triangulation);
     });
     print_error("unknown extension", []() {
       Triangulation<2> triangulation;
-      pg::Mesh::create_mesh(geometry("set Mesh = file\n"
-                                     "set File name = mesh.vtk\n"),
+      pg::Mesh::create_mesh(geometry_parameters("set Mesh = file\n"
+                                                "set File name = mesh.vtk\n"),
                             triangulation);
     });
     print_error("cook membrane in 3-D with thickness 0", []() {
       Triangulation<3> triangulation;
-      pg::Mesh::create_mesh(geometry("set Mesh = cook membrane\n"
-                                     "set Thickness = 0\n"),
+      pg::Mesh::create_mesh(geometry_parameters("set Mesh = cook membrane\n"
+                                                "set Thickness = 0\n"),
                             triangulation);
     });
     print_error("plate with hole in 3-D", []() {
       Triangulation<3> triangulation;
-      pg::Mesh::create_mesh(geometry("set Mesh = plate with hole\n"),
+      pg::Mesh::create_mesh(geometry_parameters("set Mesh = plate with hole\n"),
                             triangulation);
     });
     print_error("2 corner coordinates in 3-D", []() {
       Triangulation<3> triangulation;
-      pg::Mesh::create_mesh(geometry("set Subdivisions = 1\n"), triangulation);
+      pg::Mesh::create_mesh(geometry_parameters("set Subdivisions = 1\n"),
+                            triangulation);
     });
     print_error("2 subdivisions in 3-D", []() {
       Triangulation<3> triangulation;
-      pg::Mesh::create_mesh(geometry("set Lower corner = 0, 0, 0\n"
-                                     "set Upper corner = 1, 1, 1\n"
-                                     "set Subdivisions = 1, 2\n"),
+      pg::Mesh::create_mesh(geometry_parameters("set Lower corner = 0, 0, 0\n"
+                                                "set Upper corner = 1, 1, 1\n"
+                                                "set Subdivisions = 1, 2\n"),
                             triangulation);
     });
     // Cells that the random shifts make non-convex are drawn again: the
@@ -461,17 +467,17 @@ namespace
     // at every level, and Cook's membrane 0.45.
     print_error("distortion 0.3 of the plate with a hole, 5 refinements", []() {
       Triangulation<2> triangulation;
-      pg::Mesh::create_mesh(geometry("set Mesh = plate with hole\n"
-                                     "set Global refinement = 5\n"
-                                     "set Distortion = 0.3\n"),
+      pg::Mesh::create_mesh(geometry_parameters("set Mesh = plate with hole\n"
+                                                "set Global refinement = 5\n"
+                                                "set Distortion = 0.3\n"),
                             triangulation);
     });
     print_error("distortion 0.45 of the cook membrane, 3 refinements", []() {
       Triangulation<2> triangulation;
-      pg::Mesh::create_mesh(geometry("set Mesh = cook membrane\n"
-                                     "set Subdivisions = 2\n"
-                                     "set Global refinement = 3\n"
-                                     "set Distortion = 0.45\n"),
+      pg::Mesh::create_mesh(geometry_parameters("set Mesh = cook membrane\n"
+                                                "set Subdivisions = 2\n"
+                                                "set Global refinement = 3\n"
+                                                "set Distortion = 0.45\n"),
                             triangulation);
     });
     // 2 x 2 cells whose centre vertex (0.2, 0.2) lies inside the triangle
@@ -487,21 +493,21 @@ namespace
             << "3 0 quad 4 5 8 7\n4 0 quad 5 6 9 8\n";
       }
       Triangulation<2> triangulation;
-      pg::Mesh::create_mesh(geometry("set Mesh = file\n"
-                                     "set File name = "
-                                     "mesh_generator_01_arrow.ucd\n"
-                                     "set Distortion = 0.05\n"),
+      pg::Mesh::create_mesh(geometry_parameters("set Mesh = file\n"
+                                                "set File name = "
+                                                "mesh_generator_01_arrow.ucd\n"
+                                                "set Distortion = 0.05\n"),
                             triangulation);
     });
 
     Triangulation<2> triangulation;
-    pg::Mesh::create_mesh(geometry(""), triangulation);
+    pg::Mesh::create_mesh(geometry_parameters(""), triangulation);
     for (const std::string region :
          {"box 0,0 : 1", "sphere 0,0 : 1", "material ids a", "ball 0,0 : -1"})
       print_error("meshfree region '" + region + "'", [&]() {
-        pg::Mesh::mark_meshfree_cells(geometry("set Meshfree region = " +
-                                               region + "\n"),
-                                      triangulation);
+        pg::Mesh::mark_meshfree_cells(
+          geometry_parameters("set Meshfree region = " + region + "\n"),
+          triangulation);
       });
   }
 } // namespace

@@ -27,6 +27,7 @@
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/grid/tria.h>
 
+#include "../geometry_fixture.h"
 #include "../tests.h"
 
 #include <array>
@@ -39,13 +40,7 @@ template <int dim>
 pg::Parameters::Geometry
 geometry(const std::string &text, const std::string &cells)
 {
-  ParameterHandler prm;
-  pg::Parameters::Geometry::declare_parameters(prm);
-  prm.parse_input_from_string("subsection Geometry\n" + text +
-                              "  set Cells = " + cells + "\nend\n");
-  pg::Parameters::Geometry g;
-  g.parse_parameters(prm);
-  return g;
+  return geometry_parameters(text + "  set Cells = " + cells + "\n");
 }
 
 

@@ -21,6 +21,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
+#include "../geometry_fixture.h"
 #include "../tests.h"
 
 #include <cmath>
@@ -32,15 +33,9 @@ template <int dim>
 void
 check(const std::string &file, const unsigned int refinement)
 {
-  ParameterHandler prm;
-  pg::Parameters::Geometry::declare_parameters(prm);
-  prm.parse_input_from_string(
-    "subsection Geometry\n  set Mesh = file\n  set File name = " SOURCE_DIR
-    "/" +
-    file + "\n  set Global refinement = " + std::to_string(refinement) +
-    "\nend\n");
-  pg::Parameters::Geometry geometry;
-  geometry.parse_parameters(prm);
+  const pg::Parameters::Geometry geometry = geometry_parameters(
+    "  set Mesh = file\n  set File name = " SOURCE_DIR "/" + file +
+    "\n  set Global refinement = " + std::to_string(refinement) + "\n");
 
   Triangulation<dim> tria;
   pg::Mesh::create_mesh(geometry, tria);
