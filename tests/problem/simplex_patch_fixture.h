@@ -9,6 +9,8 @@
 
 #include "problem_fixture.h"
 
+#include <iomanip>
+#include <sstream>
 #include <string>
 
 inline std::string
@@ -61,6 +63,29 @@ patch_3d(const std::string &formulation, const std::string &region = "all")
          "  set Gradient expression = 0.1; 0.3; 0.2; 0.2; 0.4; 0.1; 0.1; "
          "0.2; 0.3\nend\n"
          "subsection Output\n  set VTU = false\nend\n";
+}
+
+
+
+/**
+ * Print "<label> <details>, round-off: yes" if the run @p s reproduced the
+ * linear field (relative L2 and H1 errors below 1e-11), else "NO" and the
+ * errors to 2 digits.
+ */
+inline void
+print_patch_result(const std::string    &label,
+                   const std::string    &details,
+                   const pg::RunSummary &s)
+{
+  const bool exact = s.L2_relative < 1e-11 && s.H1_relative < 1e-11;
+  deallog << "  " << std::left << std::setw(22) << label << std::right
+          << details << ", round-off: " << (exact ? "yes" : "NO") << std::endl;
+  if (!exact)
+    {
+      std::ostringstream line;
+      line << std::setprecision(2) << s.L2_relative << ", " << s.H1_relative;
+      deallog << "    relative L2, H1 errors: " << line.str() << std::endl;
+    }
 }
 
 #endif

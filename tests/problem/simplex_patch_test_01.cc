@@ -24,17 +24,8 @@ void
 check(const std::string &code, const std::string &parameters)
 {
   std::ostringstream   screen;
-  const pg::RunSummary s     = run_problem<dim>(parameters, screen);
-  const bool           exact = s.L2_relative < 1e-11 && s.H1_relative < 1e-11;
-  deallog << "  " << std::left << std::setw(22) << code << std::right
-          << " particles " << s.n_particles
-          << ", round-off: " << (exact ? "yes" : "NO") << std::endl;
-  if (!exact)
-    {
-      std::ostringstream line;
-      line << std::setprecision(2) << s.L2_relative << ", " << s.H1_relative;
-      deallog << "    relative L2, H1 errors: " << line.str() << std::endl;
-    }
+  const pg::RunSummary s = run_problem<dim>(parameters, screen);
+  print_patch_result(code, " particles " + std::to_string(s.n_particles), s);
 }
 
 

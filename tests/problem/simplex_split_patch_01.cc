@@ -46,19 +46,12 @@ check(const std::string &formulation, const std::string &region = "all")
   std::ostringstream   screen;
   const pg::RunSummary s =
     run_problem<dim>(split_mesh<dim>(formulation, region), screen);
-  const bool exact = s.L2_relative < 1e-11 && s.H1_relative < 1e-11;
-  deallog << "  " << std::left << std::setw(22) << formulation << std::right
-          << (region == "all" ? "" : " coupled")
-          << (s.n_particles > 0 ?
-                " particles " + std::to_string(s.n_particles) :
-                " (P1 cells)")
-          << ", round-off: " << (exact ? "yes" : "NO") << std::endl;
-  if (!exact)
-    {
-      std::ostringstream line;
-      line << std::setprecision(2) << s.L2_relative << ", " << s.H1_relative;
-      deallog << "    relative L2, H1 errors: " << line.str() << std::endl;
-    }
+  print_patch_result(formulation,
+                     std::string(region == "all" ? "" : " coupled") +
+                       (s.n_particles > 0 ?
+                          " particles " + std::to_string(s.n_particles) :
+                          " (P1 cells)"),
+                     s);
 }
 
 
