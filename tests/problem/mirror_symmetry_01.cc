@@ -28,13 +28,9 @@
 // coordinate axis are refused with a message.
 
 #include "../tests.h"
+#include "mirror_symmetry_fixture.h"
 #include "problem_fixture.h"
 
-struct Model
-{
-  std::string name;
-  std::string lower, upper, subdivisions, symmetry, dirichlet;
-};
 
 template <int dim>
 std::vector<Model>
@@ -52,60 +48,6 @@ models()
 
 
 template <int dim>
-std::string
-parameters(const Model       &model,
-           const std::string &formulation,
-           const std::string &extra_discretization = "",
-           const std::string &treatment            = "mirror",
-           const std::string &meshfree_region      = "all")
-{
-  // the mixed codes (UnlP0, U2P1, U2P1C, Unl+P1C, Q1P0) need the split
-  const bool mixed = formulation.find("P0") != std::string::npos ||
-                     formulation.find("P1") != std::string::npos;
-  std::ostringstream s;
-  s << "set Dimension = " << dim << "\n"
-    << "subsection Geometry\n"
-    << "  set Lower corner = " << model.lower << "\n"
-    << "  set Upper corner = " << model.upper << "\n"
-    << "  set Subdivisions = " << model.subdivisions << "\n"
-    << "  set Meshfree region = " << meshfree_region << "\n"
-    << "end\n"
-    << "subsection Discretization\n"
-    << "  set Formulation = " << formulation << "\n"
-    << extra_discretization << "end\n"
-    << "subsection Material\n"
-    << "  set Model = "
-    << (mixed ? "isochoric-volumetric neo-Hooke" : "neo-Hooke") << "\n"
-    << "  set Young's modulus = 100\n  set Poisson's ratio = 0.3\n"
-    << "end\n"
-    << "subsection Boundary conditions\n"
-    << "  set Dirichlet = " << model.dirichlet << "\n"
-    << "  set Symmetry = " << model.symmetry << "\n"
-    << "  set Symmetry treatment = " << treatment << "\n"
-    << "  subsection Body force\n"
-    << "    set Function expression = 20*x*t; 10*(y+y^3)*t"
-    << (dim == 3 ? "; 10*z*t" : "") << "\n"
-    << "  end\n"
-    << "end\n"
-    << (formulation == "CPD" ?
-          // bonds, triangles (and tetrahedra in 3-D), partial volumes
-          std::string("subsection CPD\n  set C1 = 1000\n  set C2 = 500\n") +
-            (dim == 3 ? "  set C3 = 100\n" : "") +
-            "  set Partial volumes = true\nend\n" :
-          std::string())
-    << "subsection Output\n"
-    << "  set VTU = false\n  set Directory = output_mirror_symmetry\n"
-    << "  set Points = "
-    << (dim == 2 ? "a: 0.5, 0.25; b: 1.5, 0.75; c: 0.25, 0.125" :
-                   "a: 0.5, 0.25, 0.5; b: 1.5, 0.75, 0.5; c: 0.25, 0.5, 0.75")
-    << "\n"
-    << "end\n";
-  return s.str();
-}
-
-
-
-template <int dim>
 void
 compare(const std::string &formulation,
         const std::string &extra           = "",
@@ -114,9 +56,13 @@ compare(const std::string &formulation,
 {
   const auto         all = models<dim>();
   std::ostringstream screen;
-  pg::RunSummary     full = run_problem<dim>(
-    parameters<dim>(all[0], formulation, extra, "mirror", meshfree_region),
-    screen);
+  pg::RunSummary     full =
+    run_problem<dim>(mirror_parameters<dim>(all[0],
+                                            formulation,
+                                            extra,
+                                            "mirror",
+                                            meshfree_region),
+                     screen);
   deallog << dim << "-D " << formulation
           << (extra.empty() ? "" :
                               " (" + extra.substr(6, extra.size() - 7) + ")")
@@ -124,9 +70,13 @@ compare(const std::string &formulation,
           << ":" << std::endl;
   for (unsigned int m = 1; m < all.size(); ++m)
     {
-      const pg::RunSummary run = run_problem<dim>(
-        parameters<dim>(all[m], formulation, extra, "mirror", meshfree_region),
-        screen);
+      const pg::RunSummary run =
+        run_problem<dim>(mirror_parameters<dim>(all[m],
+                                                formulation,
+                                                extra,
+                                                "mirror",
+                                                meshfree_region),
+                         screen);
       print_bound("  " + all[m].name + ": |u - u_full| / |u_full|",
                   point_difference(run, full),
                   bound);
@@ -142,10 +92,10 @@ constraint_treatment(const std::string &formulation)
   const auto           all = models<dim>();
   std::ostringstream   screen;
   const pg::RunSummary full =
-    run_problem<dim>(parameters<dim>(all[0], formulation), screen);
-  const pg::RunSummary cut =
-    run_problem<dim>(parameters<dim>(all.back(), formulation, "", "constraint"),
-                     screen);
+    run_problem<dim>(mirror_parameters<dim>(all[0], formulation), screen);
+  const pg::RunSummary cut = run_problem<dim>(
+    mirror_parameters<dim>(all.back(), formulation, "", "constraint"),
+    screen);
   deallog << dim << "-D " << formulation << ", " << all.back().name
           << " with 'Symmetry treatment = constraint':" << std::endl;
   print_rounded("  |u - u_full| / |u_full|", point_difference(cut, full), 2);
@@ -162,7 +112,8 @@ refused(const std::string &formulation,
   std::ostringstream screen;
   try
     {
-      run_problem<dim>(parameters<dim>(model, formulation, extra), screen);
+      run_problem<dim>(mirror_parameters<dim>(model, formulation, extra),
+                       screen);
       deallog << "  " << formulation << ": no error (wrong)" << std::endl;
     }
   catch (ExceptionBase &e)

@@ -31,13 +31,9 @@
 // 1e-6 (2-D) and 0.16 (3-D, a point on a tetrahedron edge), see README.
 
 #include "../tests.h"
+#include "mirror_symmetry_fixture.h"
 #include "problem_fixture.h"
 
-struct Model
-{
-  std::string name;
-  std::string lower, upper, subdivisions, symmetry, dirichlet;
-};
 
 template <int dim>
 std::vector<Model>
@@ -55,57 +51,6 @@ models()
 
 
 template <int dim>
-std::string
-parameters(const Model       &model,
-           const std::string &formulation,
-           const std::string &meshfree_region = "all")
-{
-  const bool mixed = formulation.find("P0") != std::string::npos ||
-                     formulation.find("P1") != std::string::npos;
-  std::ostringstream s;
-  s << "set Dimension = " << dim << "\n"
-    << "subsection Geometry\n"
-    << "  set Cells = simplices\n"
-    << "  set Lower corner = " << model.lower << "\n"
-    << "  set Upper corner = " << model.upper << "\n"
-    << "  set Subdivisions = " << model.subdivisions << "\n"
-    << "  set Meshfree region = " << meshfree_region << "\n"
-    << "end\n"
-    << "subsection Discretization\n"
-    << "  set Formulation = " << formulation << "\n"
-    << "end\n"
-    << "subsection Material\n"
-    << "  set Model = "
-    << (mixed ? "isochoric-volumetric neo-Hooke" : "neo-Hooke") << "\n"
-    << "  set Young's modulus = 100\n  set Poisson's ratio = 0.3\n"
-    << "end\n"
-    << "subsection Boundary conditions\n"
-    << "  set Dirichlet = " << model.dirichlet << "\n"
-    << "  set Symmetry = " << model.symmetry << "\n"
-    << "  set Symmetry treatment = mirror\n"
-    << "  subsection Body force\n"
-    << "    set Function expression = 20*x*t; 10*(y+y^3)*t"
-    << (dim == 3 ? "; 10*z*t" : "") << "\n"
-    << "  end\n"
-    << "end\n"
-    << (formulation == "CPD" ?
-          std::string("subsection CPD\n  set C1 = 1000\n  set C2 = 500\n") +
-            (dim == 3 ? "  set C3 = 100\n" : "") +
-            "  set Partial volumes = true\nend\n" :
-          std::string())
-    << "subsection Output\n"
-    << "  set VTU = false\n  set Directory = output_simplex_mirror\n"
-    << "  set Points = "
-    << (dim == 2 ? "a: 0.5, 0.25; b: 1.5, 0.75; c: 0.25, 0.125" :
-                   "a: 0.5, 0.25, 0.5; b: 1.5, 0.75, 0.5; c: 0.25, 0.5, 0.75")
-    << "\n"
-    << "end\n";
-  return s.str();
-}
-
-
-
-template <int dim>
 void
 compare(const std::string &formulation,
         const double       bound           = 1e-10,
@@ -114,7 +59,13 @@ compare(const std::string &formulation,
   const auto         all = models<dim>();
   std::ostringstream screen;
   pg::RunSummary     full =
-    run_problem<dim>(parameters<dim>(all[0], formulation, meshfree_region),
+    run_problem<dim>(mirror_parameters<dim>(all[0],
+                                            formulation,
+                                            "",
+                                            "mirror",
+                                            meshfree_region,
+                                            "  set Cells = simplices\n",
+                                            "output_simplex_mirror"),
                      screen);
   deallog << dim << "-D " << formulation
           << (meshfree_region == "all" ? "" : ", meshfree " + meshfree_region)
@@ -123,7 +74,13 @@ compare(const std::string &formulation,
   for (unsigned int m = 1; m < all.size(); ++m)
     {
       const pg::RunSummary run =
-        run_problem<dim>(parameters<dim>(all[m], formulation, meshfree_region),
+        run_problem<dim>(mirror_parameters<dim>(all[m],
+                                                formulation,
+                                                "",
+                                                "mirror",
+                                                meshfree_region,
+                                                "  set Cells = simplices\n",
+                                                "output_simplex_mirror"),
                          screen);
       print_bound("  " + all[m].name + ": |u - u_full| / |u_full|",
                   point_difference(run, full),
