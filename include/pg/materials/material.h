@@ -8,6 +8,8 @@
 #include <deal.II/base/tensor.h>
 
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace pg
 {
@@ -133,6 +135,43 @@ namespace pg
           evaluate(F, P, *A);
         else
           P = first_piola_stress(F);
+      }
+
+      /**
+       * The full 3x3 Cauchy stress at @p F for the state @p state that
+       * belongs to F (the committed state after an accepted step: no
+       * update is made). Used for output; the default, for stateless
+       * materials, is cauchy_stress(F).
+       */
+      virtual Tensor<2, 3>
+      cauchy_stress_with_state(const Tensor<2, dim>          &F,
+                               const ArrayView<const double> &state) const
+      {
+        (void)state;
+        return cauchy_stress(F);
+      }
+
+      /**
+       * Names of the scalar output quantities derived from the state (for
+       * VTU and summary.json), e.g. "equivalent_plastic_strain". Default:
+       * none.
+       */
+      virtual std::vector<std::string>
+      state_output_names() const
+      {
+        return {};
+      }
+
+      /**
+       * The values of the quantities of state_output_names() at @p state
+       * into @p values (same length as state_output_names()).
+       */
+      virtual void
+      state_outputs(const ArrayView<const double> &state,
+                    const ArrayView<double>       &values) const
+      {
+        (void)state;
+        AssertDimension(values.size(), 0);
       }
       /** @} */
     };

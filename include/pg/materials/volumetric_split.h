@@ -3,6 +3,7 @@
 
 #include <pg/base/global.h>
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/tensor.h>
 
 namespace pg
@@ -44,6 +45,32 @@ namespace pg
       evaluate_isochoric(const Tensor<2, dim> &F,
                          Tensor<2, dim>       &P_iso,
                          Tensor<4, dim>       &A_iso) const = 0;
+
+      /**
+       * The isochoric part with history (plasticity: the deviatoric
+       * response carries the plastic flow, the volumetric part stays
+       * elastic), under the contract of Material::evaluate_with_state():
+       * P_iso and, unless @p A_iso is nullptr, A_iso = dP_iso/dF at @p F
+       * from @p committed_state; writes the whole @p trial_state. The
+       * state is the Material's (n_state_variables() entries). The
+       * default, for stateless materials, forwards to evaluate_isochoric()
+       * or isochoric_first_piola_stress().
+       */
+      virtual void
+      evaluate_isochoric_with_state(
+        const Tensor<2, dim>          &F,
+        const ArrayView<const double> &committed_state,
+        const ArrayView<double>       &trial_state,
+        Tensor<2, dim>                &P_iso,
+        Tensor<4, dim>                *A_iso) const
+      {
+        (void)committed_state;
+        (void)trial_state;
+        if (A_iso != nullptr)
+          evaluate_isochoric(F, P_iso, *A_iso);
+        else
+          P_iso = isochoric_first_piola_stress(F);
+      }
 
       /** The volume measure theta(F); throws where it is undefined. */
       virtual double
