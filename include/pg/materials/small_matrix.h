@@ -146,13 +146,14 @@ namespace pg
       }
 
       /**
-       * exp(X) by scaling and squaring: the Taylor series of order 12 of
-       * X / 2^s with |X / 2^s| <= 1/4 (Frobenius norm of the values; the
-       * truncation error is below 3e-18 relative), squared s times. It
-       * needs no eigenvalues, so repeated eigenvalues (uniaxial states)
-       * are no special case, and it is exact up to round-off for AD types:
-       * its derivative is that of the same (convergent) series. The
-       * choice of s depends on the values only.
+       * exp(X) by scaling and squaring: the Taylor series of X / 2^s with
+       * |X / 2^s| <= 1/4 (Frobenius norm of the values), of the lowest order
+       * m >= 1 with |X / 2^s|^m / m! <= 1e-17 (at most 13), squared s
+       * times. The truncation error of the value and of its first
+       * derivatives is then below round-off. It needs no eigenvalues, so
+       * repeated eigenvalues (uniaxial states) are no special case, and it
+       * works for AD types: their derivatives are those of the same
+       * polynomial. s and m depend on the values only.
        */
       template <typename Number>
       Matrix3<Number>
@@ -174,9 +175,18 @@ namespace pg
           for (unsigned int b = 0; b < 3; ++b)
             Y[a][b] *= scale;
 
-        // Horner: exp(Y) ~ 1 + Y (1 + Y/2 (1 + Y/3 (... (1 + Y/12)))).
+        // The order m: |Y|^m / m! <= 1e-17, m >= 1 (|Y| <= 1/4: m <= 13).
+        const double norm_Y = norm * scale;
+        unsigned int order  = 1;
+        for (double term = norm_Y; term > 1e-17 && order < 13;)
+          {
+            ++order;
+            term *= norm_Y / order;
+          }
+
+        // Horner: exp(Y) ~ 1 + Y (1 + Y/2 (1 + Y/3 (... (1 + Y/m)))).
         Matrix3<Number> E = identity<Number>();
-        for (unsigned int k = 12; k >= 1; --k)
+        for (unsigned int k = order; k >= 1; --k)
           {
             E = multiply(Y, E);
             for (unsigned int a = 0; a < 3; ++a)
