@@ -109,14 +109,23 @@ namespace pg
         double b_max = 1.;
         for (unsigned int i = 0; i < 6; ++i)
           b_max = std::max(b_max, std::abs(solution.x[i]));
-        const double tolerance_1 = 1e-14 * b_max;
+        const double tolerance_1 = 1e-12 * b_max;
         const double tolerance_2 =
-          1e-12 * c.yield_stress(alpha_n) + 1e-15 * c.mu;
+          1e-11 * c.yield_stress(alpha_n) + 1e-14 * c.mu;
         const auto merit = [](const std::array<double, n_unknowns> &R) {
           double m = 0.;
           for (const double r : R)
             m += r * r;
           return m;
+        };
+        const auto failure = [](const double r1, const double r2) {
+          return ExcMessage(
+            "The local Newton iteration of the J2 plasticity update (eq. "
+            "4.41) did not converge (|R_b| = " +
+            Utilities::to_string(r1) + ", |f| = " + Utilities::to_string(r2) +
+            "): the strain increment of the step is too large. Reduce the "
+            "load step by increasing 'Load steps' in subsection 'Loading' "
+            "(or the time step).");
         };
 
         std::array<double, n_unknowns>                         R;
@@ -134,17 +143,16 @@ namespace pg
             const auto [r1, r2] = UpdateInternal::residual_norms(c, R);
             if (r1 <= tolerance_1 && r2 <= tolerance_2)
               break;
-            AssertThrow(
-              iteration < max_iterations,
-              ExcMessage(
-                "The local Newton iteration of the J2 plasticity update "
-                "(eq. 4.41) did not converge in " +
-                std::to_string(max_iterations) +
-                " iterations (|R_b| = " + Utilities::to_string(r1) +
-                ", |f| = " + Utilities::to_string(r2) +
-                "): the strain increment of the step is too large. Reduce "
-                "the load step by increasing 'Load steps' in subsection "
-                "'Loading' (or the time step)."));
+            // Within 1e3 of the tolerances a step that no longer decreases
+            // |R| means round-off: accept (the caller's correction step
+            // polishes x once more).
+            const bool near_round_off =
+              (r1 <= 1e3 * tolerance_1 && r2 <= 1e3 * tolerance_2);
+            if (iteration == max_iterations)
+              {
+                AssertThrow(near_round_off, failure(r1, r2));
+                break;
+              }
 
             std::array<double, n_unknowns> dx = R;
             for (double &v : dx)
@@ -153,24 +161,29 @@ namespace pg
                         ExcMessage("The local Jacobian of the J2 plasticity "
                                    "update (eq. 4.42) is singular."));
 
-            const double merit_0 = merit(R);
-            double       step    = 1.;
-            for (unsigned int halving = 0; halving < 20; ++halving)
+            // Backtracking: the first of 1, 1/2, 1/4, ... that keeps
+            // Delta alpha >= 0 and decreases |R|^2.
+            const double merit_0   = merit(R);
+            double       step      = 1.;
+            bool         decreased = false;
+            for (unsigned int halving = 0; halving < 30 && !decreased;
+                 ++halving, step *= 0.5)
               {
                 std::array<double, n_unknowns> x_new = solution.x;
                 for (unsigned int i = 0; i < n_unknowns; ++i)
                   x_new[i] += step * dx[i];
-                if (x_new[6] >= 0.)
+                if (x_new[6] >= 0. &&
+                    merit(residual<double>(c, x_new, b_e_trial, J, alpha_n)) <
+                      merit_0)
                   {
-                    const std::array<double, n_unknowns> R_new =
-                      residual<double>(c, x_new, b_e_trial, J, alpha_n);
-                    if (merit(R_new) < merit_0 || halving == 19)
-                      {
-                        solution.x = x_new;
-                        break;
-                      }
+                    solution.x = x_new;
+                    decreased  = true;
                   }
-                step *= 0.5;
+              }
+            if (!decreased)
+              {
+                AssertThrow(near_round_off, failure(r1, r2));
+                break;
               }
           }
 

@@ -214,10 +214,13 @@ namespace pg
       /**
        * Newton's method for R(x) = 0 from x = (b_e^tr, 0), with a
        * backtracking line search on |R|^2 that keeps Delta alpha >= 0.
-       * Converged when max |R_1| <= 1e-14 max(1, max |b_e^tr|) and
-       * |f| <= 1e-12 sigma_y(alpha_n) + 1e-15 mu. Returns x and the inverse
-       * of dR/dx there; throws, with advice, after 50 iterations. Call it
-       * only if the elastic predictor gives f > 0.
+       * Converged when max |R_1| <= 1e-12 max(1, max |b_e^tr|) and
+       * |f| <= 1e-11 sigma_y(alpha_n) + 1e-14 mu, or, within 1e3 times
+       * these, when no step decreases |R| any more (round-off); the caller
+       * then polishes x with corrected_unknowns(), one more Newton step.
+       * Returns x and the inverse of dR/dx there; throws, with advice,
+       * after 50 iterations or when the line search fails. Call it only if
+       * the elastic predictor gives f > 0.
        */
       LocalSolution
       solve_update(const Constants       &c,
