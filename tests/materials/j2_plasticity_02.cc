@@ -13,7 +13,10 @@
 // * simple shear F = 1 + gamma e_1 (x) e_2 in 2-D plane strain and 3-D:
 //   alpha and the shear stress grow monotonically, the yield function stays
 //   <= 0 (to round-off), tau_12 <= sigma_y / sqrt(3), and the Cauchy stress
-//   is symmetric.
+//   is symmetric;
+// * single large steps from the initial state (simple shear gamma = 0.5, 2,
+//   5 and uniaxial stretch 2, 6), also for perfect plasticity: the local
+//   Newton iteration converges and ends on the yield surface.
 
 #include <pg/materials/j2_plasticity.h>
 
@@ -285,6 +288,57 @@ simple_shear()
 
 
 
+void
+large_steps()
+{
+  deallog.push("single large steps");
+  Parameters::Material perfect     = necking_material();
+  perfect.saturation_yield_stress  = perfect.initial_yield_stress;
+  perfect.linear_hardening_modulus = 0.;
+  perfect.saturation_exponent      = 0.;
+  for (const Parameters::Material &parameters : {necking_material(), perfect})
+    {
+      const Materials::J2Plasticity<3> material(parameters);
+      State                            initial(n_state), trial(n_state);
+      material.initialize_state(make_array_view(initial));
+      double       worst     = 0.;
+      unsigned int n_plastic = 0;
+      for (const double g : {0.5, 2., 5.})
+        for (const bool shear : {true, false})
+          {
+            Tensor<2, 3> F = unit_symmetric_tensor<3>();
+            if (shear)
+              F[0][1] = g;
+            else
+              {
+                F[0][0] = 1. + g;
+                F[1][1] = F[2][2] = 1. / std::sqrt(1. + g);
+              }
+            Tensor<2, 3> P;
+            Tensor<4, 3> A;
+            material.evaluate_with_state(F,
+                                         make_array_view(
+                                           std::as_const(initial)),
+                                         make_array_view(trial),
+                                         P,
+                                         &A);
+            n_plastic += (trial[7] == 1. ? 1 : 0);
+            worst = std::max(worst,
+                             std::abs(material.yield_function(
+                               F,
+                               make_array_view(std::as_const(trial)))) /
+                               material.yield_stress(trial[6]));
+          }
+      deallog << (parameters.linear_hardening_modulus > 0. ? "hardening" :
+                                                             "perfect")
+              << ": plastic " << n_plastic << " of 6" << std::endl;
+      print_bound("|f| / sigma_y", worst, 1e-12);
+    }
+  deallog.pop();
+}
+
+
+
 int
 main()
 {
@@ -292,4 +346,5 @@ main()
   uniaxial_tension();
   simple_shear<2>();
   simple_shear<3>();
+  large_steps();
 }
