@@ -39,7 +39,9 @@ namespace pg
      * C_p^{-1}, d/dt alpha = lambda'.
      *
      * <b>Update (4.41).</b> If the elastic predictor (C_p^{-1} = C_{p,n}^{-1},
-     * alpha = alpha_n) gives f > 0, solve
+     * alpha = alpha_n) gives f > 1e-12 sigma_y(alpha_n) (the margin keeps a
+     * state on the yield surface from flowing again under the same F),
+     * solve
      * @f[ C_p^{-1} = F^{-1} \exp(-2 \Delta\alpha\, n) F C_{p,n}^{-1}, \qquad
      *     f(\tau, \alpha_n + \Delta\alpha) = 0. @f]
      * <em>Rebuilt sign:</em> the dissertation prints the exponent as
