@@ -206,9 +206,58 @@ namespace pg
                               K_bb,
                               scale);
             };
+            // Newton's iteration on r_b(u_b) = 0 from the u_b it finds;
+            // false if it stalls
+            const auto local_newton = [&]() {
+              for (unsigned int it = 0; it < 25 && r_b.norm() > 1e-14 * scale;
+                   ++it)
+                {
+                  const Eigen::Matrix<double, dim, 1> d = K_bb.lu().solve(r_b);
+                  bool                                accepted = false;
+                  for (double step = 1.; step > 1e-3 && !accepted; step /= 2)
+                    {
+                      Tensor<1, dim> trial       = u_b;
+                      double         trial_scale = 0;
+                      for (unsigned int i = 0; i < dim; ++i)
+                        trial[i] -= step * d[i];
+                      try
+                        {
+                          bubble_equation(table,
+                                          F0,
+                                          beta,
+                                          point_state,
+                                          material,
+                                          trial,
+                                          r_trial,
+                                          K_trial,
+                                          trial_scale);
+                        }
+                      catch (const ExceptionBase &)
+                        {
+                          continue; // J <= 0 somewhere: a shorter step
+                        }
+                      if (r_trial.norm() < r_b.norm())
+                        {
+                          u_b      = trial;
+                          r_b      = r_trial;
+                          K_bb     = K_trial;
+                          scale    = trial_scale;
+                          accepted = true;
+                        }
+                    }
+                  // (no decrease at round-off level: converged)
+                  if (!accepted && r_b.norm() <= 1e-10 * scale)
+                    return true;
+                  if (!accepted)
+                    return false;
+                }
+              return true;
+            };
             // from the last bubble where there is one (kept through
             // reset_local_fields()), else, or if that inverts the family
-            // at the new displacement, from u_b = 0
+            // at the new displacement or the iteration stalls from there
+            // (e.g. the bubble of a failed attempt before a step cut),
+            // from u_b = 0
             bool started = false;
             if (iterate != nullptr && iterate->bubble.size() == dim)
               try
@@ -216,54 +265,17 @@ namespace pg
                   for (unsigned int i = 0; i < dim; ++i)
                     u_b[i] = iterate->bubble[i];
                   evaluate_at_u_b();
-                  started = true;
+                  started = local_newton();
                 }
               catch (const ExceptionBase &)
                 {
-                  u_b = Tensor<1, dim>();
+                  started = false;
                 }
             if (!started)
-              evaluate_at_u_b();
-            for (unsigned int it = 0; it < 25 && r_b.norm() > 1e-14 * scale;
-                 ++it)
               {
-                const Eigen::Matrix<double, dim, 1> d = K_bb.lu().solve(r_b);
-                bool                                accepted = false;
-                for (double step = 1.; step > 1e-3 && !accepted; step /= 2)
-                  {
-                    Tensor<1, dim> trial       = u_b;
-                    double         trial_scale = 0;
-                    for (unsigned int i = 0; i < dim; ++i)
-                      trial[i] -= step * d[i];
-                    try
-                      {
-                        bubble_equation(table,
-                                        F0,
-                                        beta,
-                                        point_state,
-                                        material,
-                                        trial,
-                                        r_trial,
-                                        K_trial,
-                                        trial_scale);
-                      }
-                    catch (const ExceptionBase &)
-                      {
-                        continue; // J <= 0 somewhere: a shorter step
-                      }
-                    if (r_trial.norm() < r_b.norm())
-                      {
-                        u_b      = trial;
-                        r_b      = r_trial;
-                        K_bb     = K_trial;
-                        scale    = trial_scale;
-                        accepted = true;
-                      }
-                  }
-                // (no decrease at round-off level: converged)
-                if (!accepted && r_b.norm() <= 1e-10 * scale)
-                  break;
-                AssertThrow(accepted,
+                u_b = Tensor<1, dim>();
+                evaluate_at_u_b();
+                AssertThrow(local_newton(),
                             ExcMessage(
                               "The bubble of an Unl+P1C family has no local "
                               "equilibrium at this state (its local Newton "
