@@ -49,41 +49,60 @@ namespace
     return 0.05 * t + 1.125 * t * t - 1.125 * t * t * t;
   }
 
+  /**
+   * The unit square (cube: @p dim = 3) stretched by x_new = (1 + g(t)) x on
+   * its whole boundary; @p incompressible: nu = 0.5 (IUnlP0), u_x given on
+   * x = 0 and x = 1, u_y = 0 on y = 0, the top free (F = diag(1 + g,
+   * 1 / (1 + g)), no indeterminate pressure).
+   */
   std::string
   settings(const std::string &formulation,
            const unsigned int load_steps,
            const std::string &stretch_function,
            const double       increment_limit,
            const std::string &output,
-           const bool         linearized_predictor = false)
+           const bool         linearized_predictor = false,
+           const unsigned int dim                  = 2,
+           const bool         incompressible       = false)
   {
-    return "set Dimension = 2\n"
-           "subsection Geometry\n  set Lower corner = 0, 0\n"
-           "  set Upper corner = 1, 1\n  set Subdivisions = 4, 4\nend\n"
+    const bool three = (dim == 3);
+    return "set Dimension = " + std::to_string(dim) +
+           "\n"
+           "subsection Geometry\n  set Lower corner = " +
+           (three ? "0, 0, 0" : "0, 0") +
+           "\n  set Upper corner = " + (three ? "1, 1, 1" : "1, 1") +
+           "\n  set Subdivisions = " + (three ? "2, 2, 2" : "4, 4") +
+           "\nend\n"
            "subsection Discretization\n  set Formulation = " +
            formulation +
            "\nend\n"
            "subsection Material\n  set Model = isochoric damage neo-Hooke\n"
-           "  set Young's modulus = 100\n  set Poisson's ratio = 0.3\n"
+           "  set Young's modulus = 100\n  set Poisson's ratio = " +
+           (incompressible ? "0.5" : "0.3") +
+           "\n"
            "  subsection isochoric damage neo-Hooke\n"
            "    set Damage strain = 0.05\n"
            "    set Increment limit = " +
            std::to_string(increment_limit) +
            "\n  end\nend\n"
            "subsection Boundary conditions\n"
-           "  set Dirichlet = 0: xy, 1: xy, 2: xy, 3: xy\n"
+           "  set Dirichlet = " +
+           (three          ? "0: xyz, 1: xyz, 2: xyz, 3: xyz, 4: xyz, 5: xyz" :
+            incompressible ? "0: x, 1: x, 2: y" :
+                             "0: xy, 1: xy, 2: xy, 3: xy") +
+           "\n"
            "  subsection Prescribed displacement\n"
            "    set Function expression = (" +
-           stretch_function +
-           ")*x; 0\n  end\nend\n"
+           stretch_function + ")*x; 0" + (three ? "; 0" : "") +
+           "\n  end\nend\n"
            "subsection Loading\n  set Load steps = " +
            std::to_string(load_steps) +
            (linearized_predictor ? "\n  set Predictor = linearized" : "") +
            "\nend\n"
            "subsection Newton\n  set Relative tolerance = 1e-13\n"
            "  set Absolute tolerance = 1e-12\nend\n"
-           "subsection Output\n  set Points = centre: 0.5, 0.5\n" +
-           output + "end\n";
+           "subsection Output\n  set Points = centre: " +
+           (three ? "0.5, 0.5, 0.5" : "0.5, 0.5") + "\n" + output + "end\n";
   }
 
   struct Result
@@ -95,16 +114,17 @@ namespace
     std::string         screen;
   };
 
+  template <int dim = 2>
   Result
   run(const std::string &parameters, const bool restart = false)
   {
     std::ostringstream       screen;
     dealii::ParameterHandler prm;
-    declare_all_parameters<2>(prm);
+    declare_all_parameters<dim>(prm);
     prm.parse_input_from_string(parameters);
-    Parameters::AllParameters<2> all;
+    Parameters::AllParameters<dim> all;
     all.parse_parameters(prm);
-    Problem<2> problem(all, MPI_COMM_WORLD, screen, restart);
+    Problem<dim> problem(all, MPI_COMM_WORLD, screen, restart);
     problem.run();
     Result result;
     result.summary     = problem.summary();
@@ -116,11 +136,19 @@ namespace
   }
 
   Parameters::Material
-  material_parameters()
+  material_parameters(const bool incompressible = false)
   {
     dealii::ParameterHandler prm;
     declare_all_parameters<2>(prm);
-    prm.parse_input_from_string(settings("FEM", 3, stretch, 1e3, ""));
+    prm.parse_input_from_string(
+      settings(incompressible ? "VCPBG IUnlP0" : "FEM",
+               3,
+               stretch,
+               1e3,
+               "",
+               false,
+               2,
+               incompressible));
     Parameters::AllParameters<2> all;
     all.parse_parameters(prm);
     return all.material;
@@ -254,7 +282,40 @@ main(int argc, char **argv)
           << " (with the damage of the last F alone: " << undamaged[0][0] << ")"
           << std::endl;
 
-  // 2. every formulation
+  // 2. every formulation: the committed state at every point, the stress
+  // at the centre and summary.json's max_damage against the closed form
+  const auto check = [](const std::string &label,
+                        const Result      &r,
+                        const double       kappa,
+                        const double       d,
+                        const double       sigma_xx) {
+    double       state_error = 0;
+    unsigned int n_points    = 0;
+    for (unsigned int i = 0; i < r.committed.size(); i += r.n_variables)
+      {
+        state_error = std::max({state_error,
+                                std::abs(r.committed[i] - kappa) / kappa,
+                                std::abs(r.committed[i + 1] - d) / d});
+        ++n_points;
+      }
+    const double stress_error =
+      std::abs(r.summary.point_stresses.at(0).second[0] - sigma_xx) /
+      std::abs(sigma_xx);
+    double max_damage = -1;
+    for (const auto &[name, value] : r.summary.state_output_maxima)
+      if (name == "damage")
+        max_damage = value;
+    const bool ok = r.summary.converged && state_error < 1e-10 &&
+                    stress_error < 1e-8 && std::abs(max_damage - d) < 1e-10 * d;
+    deallog << std::left << std::setw(23) << label << std::right << " points "
+            << std::setw(4) << n_points << ", values per point "
+            << r.n_variables
+            << ": state, sigma_xx, max_damage exact: " << (ok ? "yes" : "NO")
+            << std::endl;
+    if (!ok)
+      deallog << "  state " << state_error << ", stress " << stress_error
+              << ", max_damage " << max_damage << std::endl;
+  };
   const std::string no_vtu = "  set VTU = false\n";
   for (const std::string formulation : {"FEM",
                                         "FEM Q1P0",
@@ -268,54 +329,81 @@ main(int argc, char **argv)
                                         "VCPBG U1SIG",
                                         "VCBCPPG V3sn Unl",
                                         "VCBCPPG V3sn UnlP0"})
-    {
-      Result r;
-      try
-        {
-          // (the nodal-pressure codes need smaller steps under the
-          // softening of the damage: their first Newton iterates invert
-          // families; the grid t = k/12 still has its largest g at 2/3)
-          const bool nodal_pressure =
-            formulation.find("P1C") != std::string::npos;
-          r = run(settings(formulation,
+    try
+      {
+        // (the nodal-pressure codes need smaller steps under the
+        // softening of the damage: their first Newton iterates invert
+        // families; the grid t = k/12 still has its largest g at 2/3)
+        const bool nodal_pressure =
+          formulation.find("P1C") != std::string::npos;
+        check(formulation,
+              run(settings(formulation,
                            nodal_pressure ? 12 : 3,
                            stretch,
                            1e3,
-                           no_vtu));
+                           no_vtu)),
+              kappa,
+              d,
+              sigma[0][0]);
+      }
+    catch (const std::exception &e)
+      {
+        deallog << formulation << " failed: " << e.what() << std::endl;
+      }
+  // 3-D: F = diag(1 + g, 1, 1) has the plane strain closed form
+  for (const std::string formulation :
+       {"FEM", "FEM H1P0", "VCBCPBG V5sn Unl", "VCBCPBG V5sn UnlP0"})
+    try
+      {
+        check("3d " + formulation,
+              run<3>(settings(formulation, 3, stretch, 1e3, no_vtu, false, 3)),
+              kappa,
+              d,
+              sigma[0][0]);
+      }
+    catch (const std::exception &e)
+      {
+        deallog << "3d " << formulation << " failed: " << e.what() << std::endl;
+      }
+  // IUnlP0 (nu = 0.5, the material without its volumetric energy): F =
+  // diag(1 + g, 1 / (1 + g)) with the top free, sigma_yy = 0, so
+  // sigma_xx = (1 - d) (sigma_iso_xx - sigma_iso_yy)
+  {
+    const Materials::IsochoricDamageNeoHooke<2> isochoric(
+      material_parameters(true).without_volumetric_energy());
+    const auto F_incompressible = [](const double t) {
+      Tensor<2, 2> F;
+      F[0][0] = 1. + g(t);
+      F[1][1] = 1. / (1. + g(t));
+      return F;
+    };
+    double kappa_i = 0;
+    for (const double t : {1. / 3, 2. / 3, 1.})
+      kappa_i =
+        std::max(kappa_i, isochoric.strain_measure(F_incompressible(t)));
+    const double       d_i        = isochoric.damage(kappa_i);
+    const double       state_i[2] = {kappa_i, d_i};
+    const Tensor<2, 3> c =
+      isochoric.cauchy_stress_with_state(F_incompressible(1.),
+                                         make_array_view(state_i));
+    deallog << "incompressible closed form: kappa = " << kappa_i
+            << ", d = " << d_i << ", sigma_xx = " << c[0][0] - c[1][1]
+            << std::endl;
+    for (const std::string formulation : {"VCPBG IUnlP0", "VCPPG IUnlP0"})
+      try
+        {
+          check(
+            formulation,
+            run(settings(formulation, 3, stretch, 1e3, no_vtu, false, 2, true)),
+            kappa_i,
+            d_i,
+            c[0][0] - c[1][1]);
         }
       catch (const std::exception &e)
         {
           deallog << formulation << " failed: " << e.what() << std::endl;
-          continue;
         }
-      double       state_error = 0;
-      unsigned int n_points    = 0;
-      for (unsigned int i = 0; i < r.committed.size(); i += r.n_variables)
-        {
-          state_error = std::max({state_error,
-                                  std::abs(r.committed[i] - kappa) / kappa,
-                                  std::abs(r.committed[i + 1] - d) / d});
-          ++n_points;
-        }
-      const double stress_error =
-        std::abs(r.summary.point_stresses.at(0).second[0] - sigma[0][0]) /
-        std::abs(sigma[0][0]);
-      double max_damage = -1;
-      for (const auto &[name, value] : r.summary.state_output_maxima)
-        if (name == "damage")
-          max_damage = value;
-      const bool ok = r.summary.converged && state_error < 1e-10 &&
-                      stress_error < 1e-8 &&
-                      std::abs(max_damage - d) < 1e-10 * d;
-      deallog << std::left << std::setw(20) << formulation << std::right
-              << " points " << std::setw(4) << n_points << ", values per point "
-              << r.n_variables
-              << ": state, sigma_xx, max_damage exact: " << (ok ? "yes" : "NO")
-              << std::endl;
-      if (!ok)
-        deallog << "  state " << state_error << ", stress " << stress_error
-                << ", max_damage " << max_damage << std::endl;
-    }
+  }
   deallog << "sigma_xx(committed) / sigma_xx(damage of the last F alone) = "
           << sigma[0][0] / undamaged[0][0] << std::endl;
 
