@@ -669,6 +669,15 @@ namespace pg
       std::make_unique<Assembler<dim>>(zero_constraints,
                                        std::vector<ElementGroup<dim> *>{
                                          amg_cells.get()});
+    if (material.n_state_variables() > 0)
+      {
+        amg_history.reinit(amg_assembler->evaluation_points(),
+                           material.n_state_variables(),
+                           [this](const ArrayView<double> &state) {
+                             material.initialize_state(state);
+                           });
+        amg_assembler->set_history(&amg_history);
+      }
     DynamicSparsityPattern dsp(discretization.relevant_dofs);
     amg_assembler->add_sparsity(dsp);
     SparsityTools::distribute_sparsity_pattern(dsp,

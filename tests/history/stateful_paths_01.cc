@@ -14,13 +14,18 @@
 //    sigma_xx at the centre (the nodal stress, from the committed state)
 //    equals (1 - d) sigma_iso + p at F = diag(1.05, 1), and differs from
 //    the stress with the damage of F alone (the unloading is degraded);
-//    summary.json's max_damage equals d. CPD refuses the material.
+//    summary.json's max_damage equals d. The same in 3-D (FEM H1, H1P0,
+//    VCBCPBG Unl, UnlP0), with CG and the Q1 AMG operator, and for IUnlP0
+//    (nu = 0.5, F = diag(1 + g, 1 / (1 + g)), top free). CPD refuses the
+//    material.
 // 3. A step cut: with 'Increment limit' the material's update throws when
 //    kappa would grow by more than the limit in one step, so the single
 //    load step to g = 0.2 fails, is cut to t = 0.5 and grown again (the
 //    linearized predictor keeps every iterate homogeneous). The
 //    committed state and the displacement equal those of two plain load
-//    steps bit for bit (the failed attempt left nothing behind).
+//    steps bit for bit (the failed attempt left nothing behind; Unl+P1C to
+//    round-off: its bubble iteration starts from the failed attempt's
+//    bubble, a warm start outside the history).
 // 4. A restart from the checkpoint of step 2 gives the committed state of
 //    the uninterrupted run bit for bit (U1SIG: material state and the
 //    kernel's F in one store).
@@ -63,7 +68,8 @@ namespace
            const std::string &output,
            const bool         linearized_predictor = false,
            const unsigned int dim                  = 2,
-           const bool         incompressible       = false)
+           const bool         incompressible       = false,
+           const std::string &extra                = "")
   {
     const bool three = (dim == 3);
     return "set Dimension = " + std::to_string(dim) +
@@ -102,7 +108,8 @@ namespace
            "subsection Newton\n  set Relative tolerance = 1e-13\n"
            "  set Absolute tolerance = 1e-12\nend\n"
            "subsection Output\n  set Points = centre: " +
-           (three ? "0.5, 0.5, 0.5" : "0.5, 0.5") + "\n" + output + "end\n";
+           (three ? "0.5, 0.5, 0.5" : "0.5, 0.5") + "\n" + output + "end\n" +
+           extra;
   }
 
   struct Result
@@ -350,6 +357,22 @@ main(int argc, char **argv)
       {
         deallog << formulation << " failed: " << e.what() << std::endl;
       }
+  // CG with the AMG hierarchy of the Q1 tangent of the cells (the initial
+  // state's: a preconditioner only)
+  check("VCBCPBG V5sn Unl, AMG Q1",
+        run(settings("VCBCPBG V5sn Unl",
+                     3,
+                     stretch,
+                     1e3,
+                     no_vtu,
+                     false,
+                     2,
+                     false,
+                     "subsection Linear solver\n  set Type = cg\n"
+                     "  set AMG operator = Q1 cells\nend\n")),
+        kappa,
+        d,
+        sigma[0][0]);
   // 3-D: F = diag(1 + g, 1, 1) has the plane strain closed form
   for (const std::string formulation :
        {"FEM", "FEM H1P0", "VCBCPBG V5sn Unl", "VCBCPBG V5sn UnlP0"})
