@@ -173,6 +173,33 @@ namespace pg
                           "1",
                           Patterns::Double(0.),
                           "Reference density rho_0. Units: mass per volume.");
+        prm.declare_entry("Initial yield stress",
+                          "1",
+                          Patterns::Double(),
+                          "sigma_y0 > 0 of 'Model = J2 plasticity' (used "
+                          "by that model only): the yield stress "
+                          "sigma_y(alpha) = sigma_y0 + H alpha + (sigma_yinf "
+                          "- sigma_y0) (1 - exp(-delta alpha)) of the "
+                          "equivalent plastic strain alpha, eq. 2.49, bounds "
+                          "the von Mises Kirchhoff stress. Units: force per "
+                          "area.");
+        prm.declare_entry("Saturation yield stress",
+                          "1",
+                          Patterns::Double(),
+                          "sigma_yinf >= sigma_y0 of 'Model = J2 "
+                          "plasticity' (see 'Initial yield stress'; equal "
+                          "to it: no saturation hardening). Units: force per "
+                          "area.");
+        prm.declare_entry("Linear hardening modulus",
+                          "0",
+                          Patterns::Double(),
+                          "H >= 0 of 'Model = J2 plasticity' (see 'Initial "
+                          "yield stress'). Units: force per area.");
+        prm.declare_entry("Saturation exponent",
+                          "0",
+                          Patterns::Double(),
+                          "delta >= 0 of 'Model = J2 plasticity' (see "
+                          "'Initial yield stress'). Dimensionless.");
         prm.declare_entry("Plane",
                           "strain",
                           Patterns::Selection("strain|stress"),
@@ -198,13 +225,17 @@ namespace pg
       std::string bulk_text, shear_text;
       prm.enter_subsection("Material");
       {
-        model          = prm.get("Model");
-        youngs_modulus = prm.get_double("Young's modulus");
-        poissons_ratio = prm.get_double("Poisson's ratio");
-        density        = prm.get_double("Density");
-        plane          = prm.get("Plane");
-        bulk_text      = Utilities::trim(prm.get("Bulk modulus"));
-        shear_text     = Utilities::trim(prm.get("Shear modulus"));
+        model                    = prm.get("Model");
+        youngs_modulus           = prm.get_double("Young's modulus");
+        poissons_ratio           = prm.get_double("Poisson's ratio");
+        density                  = prm.get_double("Density");
+        plane                    = prm.get("Plane");
+        initial_yield_stress     = prm.get_double("Initial yield stress");
+        saturation_yield_stress  = prm.get_double("Saturation yield stress");
+        linear_hardening_modulus = prm.get_double("Linear hardening modulus");
+        saturation_exponent      = prm.get_double("Saturation exponent");
+        bulk_text                = Utilities::trim(prm.get("Bulk modulus"));
+        shear_text               = Utilities::trim(prm.get("Shear modulus"));
         model_entries.clear();
         const Materials::MaterialPlugin &plugin =
           Materials::material_registry().get(model, "Material/Model");

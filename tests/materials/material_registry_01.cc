@@ -1,11 +1,13 @@
 // The material registry: the registered names in their listing order, the
 // 'Model' selection and documentation built from them (those of before the
-// registry, plus the isochoric-volumetric neo-Hooke), creating each material
+// registry, plus the isochoric-volumetric neo-Hooke and J2 plasticity),
+// creating each material
 // by name in 2-D and 3-D, the model's own checks in its constructor, and the
 // message for an unknown name, which lists the registered names.
 
 #include <pg/base/parameters.h>
 #include <pg/materials/isochoric_volumetric_neo_hooke.h>
+#include <pg/materials/j2_plasticity.h>
 #include <pg/materials/linear_elastic.h>
 #include <pg/materials/material_registry.h>
 #include <pg/materials/neo_hooke.h>
@@ -73,9 +75,15 @@ check_create()
                   make_parameters("isochoric-volumetric neo-Hooke", "strain"))
                   .get()) != nullptr,
               ExcInternalError());
+  AssertThrow(
+    dynamic_cast<J2Plasticity<dim> *>(
+      create_material<dim>(make_parameters("J2 plasticity", "strain")).get()) !=
+      nullptr,
+    ExcInternalError());
+  // Only J2 plasticity has state (C_p^-1, alpha, the yield flag).
   for (const std::string &name : material_registry().names())
     AssertThrow(create_material<dim>(make_parameters(name, "strain"))
-                    ->n_state_variables() == 0,
+                    ->n_state_variables() == (name == "J2 plasticity" ? 8 : 0),
                 ExcInternalError());
   deallog << dim << "-D: each registered material created by name" << std::endl;
 }
@@ -92,19 +100,21 @@ main()
   const std::vector<std::string> expected = {"linear elastic",
                                              "saint venant kirchhoff",
                                              "neo-Hooke",
-                                             "isochoric-volumetric neo-Hooke"};
+                                             "isochoric-volumetric neo-Hooke",
+                                             "J2 plasticity"};
   AssertThrow(registry.names() == expected, ExcInternalError());
   AssertThrow(registry.selection() ==
                 "linear elastic|saint venant kirchhoff|neo-Hooke|"
-                "isochoric-volumetric neo-Hooke",
+                "isochoric-volumetric neo-Hooke|J2 plasticity",
               ExcInternalError());
   AssertThrow(
     registry.documentation() ==
       "'linear elastic' (small strain, P = sigma(eps)), 'saint "
       "venant kirchhoff' (S = lambda tr(E) 1 + 2 mu E, eq. 2.45), "
-      "'neo-Hooke' (compressible, eq. 2.42) or 'isochoric-volumetric "
+      "'neo-Hooke' (compressible, eq. 2.42), 'isochoric-volumetric "
       "neo-Hooke' (mu/2 (tr b_iso - 3) + K/4 (J^2 - 1 - 2 ln J), eqs. "
-      "2.43-2.44)",
+      "2.43-2.44) or 'J2 plasticity' (finite von Mises plasticity, F = Fe "
+      "Fp, with nonlinear isotropic hardening, eqs. 2.46-2.54, 4.41)",
     ExcInternalError());
   for (const std::string &name : registry.names())
     deallog << "registered: " << name << " ("
@@ -157,7 +167,8 @@ main()
   AssertThrow(unknown ==
                 "The entry 'Material/Model' has the value <mooney rivlin>, "
                 "but it must be one of 'linear elastic', 'saint venant "
-                "kirchhoff', 'neo-Hooke' or 'isochoric-volumetric neo-Hooke'.",
+                "kirchhoff', 'neo-Hooke', 'isochoric-volumetric neo-Hooke' or "
+                "'J2 plasticity'.",
               ExcInternalError());
   deallog << "unknown model: " << unknown << std::endl;
 

@@ -81,10 +81,11 @@ namespace pg
      * For the VC code @p formulation on the ranks of @p comm, solved by
      * @p solver ('VC solver' in subsection 'Linear solver'): "automatic"
      * (GMRES where the system is regular, with ILU(0) below
-     * #amg_from_rows rows and ML AMG from there; the direct solver where
-     * it is singular, i.e. FE coupling plus a free surface, or where GMRES
-     * does not converge), "ilu" or "amg" (GMRES with that preconditioner
-     * where the system is regular) or "direct".
+     * #amg_from_rows rows and ML AMG first from there, ILU(0) where the
+     * AMG fails; the direct solver where the system is singular, i.e. FE
+     * coupling plus a free surface, or where GMRES does not converge),
+     * "ilu" or "amg" (GMRES with that preconditioner where the system is
+     * regular) or "direct".
      */
     CorrectionSystem(const FormulationCode &formulation,
                      const MPI_Comm         comm,
@@ -95,8 +96,8 @@ namespace pg
     /** GMRES iterations before the direct solver takes over. */
     static constexpr unsigned int max_iterations = 2000;
     /**
-     * 'VC solver = automatic' preconditions GMRES with AMG from this many
-     * rows on, with ILU(0) below. ILU(0)'s iterations grow like 1/h, AMG's
+     * 'VC solver = automatic' tries GMRES with ML AMG first from this many
+     * rows on, ILU(0) below. ILU(0)'s iterations grow like 1/h, AMG's
      * slowly, but AMG's set-up costs more: on the 3-D cantilever (V5sn,
      * 1.51 h) ILU(0) 0.99 / 5.2 / 20.9 s (99 / 154 / 241 iterations), AMG
      * 1.10 / 4.3 / 12.5 s (32 / 43 / 53) at 56,355 / 181,875 / 421,443
@@ -104,6 +105,14 @@ namespace pg
      * 3.3 s against 4.4 s (doc/benchmarks/vc_solve.md).
      */
     static constexpr unsigned int amg_from_rows = 100000;
+    /**
+     * The automatic choice drops the AMG for ILU(0) when the residual has
+     * not fallen below 1e-4 |b| after this many GMRES iterations (where it
+     * works it reaches 1e-13 in 32 to 53) or when its true residual misses
+     * the tolerance: it breaks down on the 3-D Cook membrane
+     * (doc/benchmarks/vc_solve.md).
+     */
+    static constexpr unsigned int amg_stagnation_iterations = 100;
 
     /**
      * Classify the rows, build the sparsity pattern from the correction

@@ -39,6 +39,26 @@ namespace pg
       std::optional<double> bulk_modulus;
       std::optional<double> shear_modulus;
       double                density;
+      /**
+       * @name Hardening of 'J2 plasticity' (eq. 2.49; used by that model
+       * only, checked by its constructor)
+       *
+       * sigma_y(alpha) = sigma_y0 + H alpha + (sigma_yinf - sigma_y0)
+       * (1 - exp(-delta alpha)) of the equivalent plastic strain alpha.
+       */
+      /** @{ */
+      /** sigma_y0 > 0, 'Initial yield stress'. Units: force per area. */
+      double initial_yield_stress = 1.;
+      /**
+       * sigma_yinf >= sigma_y0, 'Saturation yield stress'. Units: force per
+       * area.
+       */
+      double saturation_yield_stress = 1.;
+      /** H >= 0, 'Linear hardening modulus'. Units: force per area. */
+      double linear_hardening_modulus = 0.;
+      /** delta >= 0, 'Saturation exponent'. Dimensionless. */
+      double saturation_exponent = 0.;
+      /** @} */
       /** strain | stress (2-D only) */
       std::string plane;
       /**

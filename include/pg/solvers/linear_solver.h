@@ -153,7 +153,12 @@ namespace pg
    * over the locally owned rows per near-null vector, as
    * PreconditionAMG::AdditionalData::constant_modes) are used by the AMG
    * only. Returns the number of iterations; throws
-   * SolverControl::NoConvergence after @p max_iterations.
+   * SolverControl::NoConvergence after @p max_iterations, or when the true
+   * residual |b - A x| at GMRES's stop exceeds 100 @p tolerance |b| (its
+   * own estimate can be far off when the preconditioner is nearly
+   * singular). With @p stagnation_iterations > 0 it also throws when the
+   * residual has not fallen below 1e-4 |b| after that many iterations (a
+   * preconditioner worth trying first, dropped early where it fails).
    */
   unsigned int
   solve_by_gmres(const LinearAlgebra::SparseMatrix    &matrix,
@@ -162,7 +167,8 @@ namespace pg
                  const GMRESPreconditioner             preconditioner,
                  const std::vector<std::vector<bool>> &constant_modes,
                  const double                          tolerance,
-                 const unsigned int                    max_iterations);
+                 const unsigned int                    max_iterations,
+                 const unsigned int stagnation_iterations = 0);
 
   /**
    * Solve A x = b for a square @p matrix A that may be singular but whose
