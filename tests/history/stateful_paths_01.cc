@@ -30,6 +30,9 @@
 //    the uninterrupted run bit for bit (U1SIG: material state and the
 //    kernel's F in one store).
 // 5. The VTU files (cells and particles) carry the state outputs.
+// 6. J2 plasticity in every formulation: a homogeneous stretch by 2 %
+//    (loading, more loading, unloading) gives the same largest equivalent
+//    plastic strain (summary.json) as FEM to 1e-10.
 
 #include <pg/base/exceptions.h>
 #include <pg/problem.h>
@@ -522,6 +525,58 @@ main(int argc, char **argv)
                   "yes" :
                   "NO")
             << std::endl;
+  }
+
+  // 6. J2 plasticity (issue 46's material) through every formulation: the
+  // homogeneous stretch by 2 % (g / 10) gives the same largest equivalent
+  // plastic strain in each (relative to FEM's)
+  {
+    const auto j2 = [&](const std::string &formulation) {
+      std::string text =
+        settings(formulation, 3, "0.1*(" + stretch + ")", 1e3, no_vtu, true);
+      const std::string from = "  set Model = isochoric damage neo-Hooke\n";
+      text.replace(text.find(from),
+                   from.size(),
+                   "  set Model = J2 plasticity\n"
+                   "  set Initial yield stress = 0.45\n"
+                   "  set Saturation yield stress = 0.715\n"
+                   "  set Linear hardening modulus = 0.13\n"
+                   "  set Saturation exponent = 16.93\n");
+      const std::string entries =
+        text.substr(text.find("  subsection isochoric damage neo-Hooke"),
+                    text.find("  end\nend\nsubsection Boundary") + 6 -
+                      text.find("  subsection isochoric damage neo-Hooke"));
+      text.replace(text.find(entries), entries.size(), "");
+      const RunSummary summary = run(text).summary;
+      for (const auto &[name, value] : summary.state_output_maxima)
+        if (name == "equivalent_plastic_strain")
+          return value;
+      return -1.;
+    };
+    const double reference = j2("FEM");
+    deallog << "J2 plasticity, max equivalent plastic strain (FEM) = "
+            << reference << std::endl;
+    for (const std::string formulation : {"FEM Q1P0",
+                                          "VCBCPBG V5sn Unl",
+                                          "VCPBG V5sn U2",
+                                          "VCBCPBG V5sn UnlP0",
+                                          "VCPBG U2P1",
+                                          "VCPBG U2P1C",
+                                          "VCPBG Unl+P1C",
+                                          "VCPBG U1SUnl",
+                                          "VCPBG U1SIG",
+                                          "VCBCPPG V3sn Unl",
+                                          "VCBCPPG V3sn UnlP0"})
+      try
+        {
+          print_bound("  " + formulation + ", relative difference to FEM",
+                      std::abs(j2(formulation) - reference) / reference,
+                      1e-10);
+        }
+      catch (const std::exception &e)
+        {
+          deallog << formulation << " failed: " << e.what() << std::endl;
+        }
   }
 
   // 5. the state outputs in the VTU files and summary.json
