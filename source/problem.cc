@@ -328,6 +328,7 @@ namespace pg
     v.force                  = &system.force;
     v.constraints            = &system.constraints;
     v.unit_stress            = &system.particle_loads.unit_stress();
+    v.history                = &system.history;
     v.point_locations        = &point_locations;
     v.line_locations         = &line_locations;
     v.mesh_diameter          = &discretization.mesh_diameter;
@@ -689,6 +690,15 @@ namespace pg
   Problem<dim>::summary() const
   {
     return implementation->summary;
+  }
+
+
+
+  template <int dim>
+  const QuadraturePointHistory &
+  Problem<dim>::history() const
+  {
+    return implementation->system.history;
   }
 
 

@@ -3,6 +3,7 @@
 
 #include <pg/base/global.h>
 #include <pg/base/parameters.h>
+#include <pg/history/quadrature_point_history.h>
 #include <pg/postprocess/run_summary.h>
 
 #include <deal.II/base/mpi.h>
@@ -44,6 +45,13 @@ namespace pg
 
     const RunSummary &
     summary() const;
+
+    /**
+     * The point history of this rank's elements (committed: the state of
+     * the last accepted step; doc/architecture.md, "History"), for tests.
+     */
+    const QuadraturePointHistory &
+    history() const;
 
   private:
     class Implementation;

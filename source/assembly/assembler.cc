@@ -364,8 +364,9 @@ namespace pg
                 ElementHistory element_history;
                 if (history != nullptr && history->n_variables() > 0)
                   {
-                    element_history.committed = history->committed(g, *it);
-                    element_history.trial     = history->trial(g, *it);
+                    element_history.committed   = history->committed(g, *it);
+                    element_history.trial       = history->trial(g, *it);
+                    element_history.n_variables = history->n_variables();
                   }
                 group.assemble(*it,
                                u,

@@ -2,6 +2,8 @@
 #include <pg/base/formulation_code.h>
 #include <pg/base/parameters.h>
 #include <pg/base/shared_libraries.h>
+#include <pg/materials/material.h>
+#include <pg/materials/volumetric_split.h>
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
@@ -414,8 +416,14 @@ namespace pg
             "0.5."));
       if (code.mixed())
         {
+          // (any registered model that offers the split: the two built-in
+          // ones, or e.g. a model with history whose isochoric part carries
+          // it)
           AssertThrow(material.model == "isochoric-volumetric neo-Hooke" ||
-                        material.model == "linear elastic",
+                        material.model == "linear elastic" ||
+                        dynamic_cast<const Materials::VolumetricSplit<dim> *>(
+                          Materials::create_material<dim>(material).get()) !=
+                          nullptr,
                       ExcBadParameter(
                         "Material/Model",
                         material.model,

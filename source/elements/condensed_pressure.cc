@@ -210,11 +210,32 @@ namespace pg
 
 
     /**
+     * The material's state variables per point of @p table, from the size
+     * of its slice @p committed_state (0: stateless).
+     */
+    template <int dim>
+    unsigned int
+    n_material_state(const QuadratureTable<dim>    &table,
+                     const ArrayView<const double> &committed_state)
+    {
+      if ((committed_state.size() == 0))
+        return 0;
+      AssertThrow(table.n_points() > 0 &&
+                    committed_state.size() % table.n_points() == 0,
+                  ExcInternalError());
+      return committed_state.size() / table.n_points();
+    }
+
+
+
+    /**
      * The isochoric part at every point of @p table and the volumetric
      * stress p d theta / dF (with its tangent p d^2 theta) of the constant
      * pressure @p p at the volumetric points: those of @p table itself
      * (@p volumetric_table nullptr; one kernel call) or of a separate table
-     * (a PPG family's master; two calls).
+     * (a PPG family's master; two calls). The isochoric part carries the
+     * material's state (@p committed_state, @p trial_state: the material's
+     * slices of the points of @p table; empty if stateless).
      */
     template <int dim>
     void
@@ -225,22 +246,31 @@ namespace pg
       const Materials::VolumetricSplit<dim> &split,
       const double                           p,
       Vector<double>                        &residual,
-      FullMatrix<double>                    *tangent)
+      FullMatrix<double>                    *tangent,
+      const ArrayView<const double>         &committed_state,
+      const ArrayView<double>               &trial_state)
     {
+      const unsigned int n_state = n_material_state(table, committed_state);
       if (volumetric_table == nullptr)
         {
-          assemble_element(table,
-                           y,
-                           IsochoricPartAtPressure<dim>(split, p, true),
-                           residual,
-                           tangent);
+          assemble_element(
+            table,
+            y,
+            IsochoricPartAtPressure<dim>(split, p, true, false, n_state),
+            residual,
+            tangent,
+            committed_state,
+            trial_state);
           return;
         }
-      assemble_element(table,
-                       y,
-                       IsochoricPartAtPressure<dim>(split, 0., true),
-                       residual,
-                       tangent);
+      assemble_element(
+        table,
+        y,
+        IsochoricPartAtPressure<dim>(split, 0., true, false, n_state),
+        residual,
+        tangent,
+        committed_state,
+        trial_state);
       Vector<double>     volumetric_residual;
       FullMatrix<double> volumetric_tangent;
       assemble_element(*volumetric_table,
@@ -324,7 +354,9 @@ namespace pg
     Vector<double>                        &residual,
     FullMatrix<double>                    *tangent,
     const unsigned int                     degree,
-    CondensedFieldIterate                 *iterate)
+    CondensedFieldIterate                 *iterate,
+    const ArrayView<const double>         &committed_state,
+    const ArrayView<double>               &trial_state)
   {
     Assert(degree == 0 || volumetric_table == nullptr, ExcNotImplemented());
     const QuadratureTable<dim> &vol_table =
@@ -355,14 +387,21 @@ namespace pg
     // The isochoric part and p d^2 theta at every point.
     if (degree == 1)
       {
-        std::vector<double> unchanged_pressures(p.size());
+        // p differs per point: the kernel reads it from the state, after
+        // the material's own variables
+        const IsochoricPartAtPressure<dim>
+          part(split, 0., true, true, n_material_state(table, committed_state));
+        const std::vector<double> committed =
+          part.with_pressure_per_point(committed_state, p, table.n_points());
+        std::vector<double> trial(committed.size());
         assemble_element(table,
                          y,
-                         IsochoricPartAtPressure<dim>(split, 0., true, true),
+                         part,
                          residual,
                          tangent,
-                         make_array_view(p),
-                         make_array_view(unchanged_pressures));
+                         make_array_view(committed),
+                         make_array_view(trial));
+        part.extract_material_state(trial, trial_state);
       }
     else
       assemble_isochoric_part_at_pressure(table,
@@ -371,7 +410,9 @@ namespace pg
                                           split,
                                           p[0],
                                           residual,
-                                          tangent);
+                                          tangent,
+                                          committed_state,
+                                          trial_state);
 
     // Three fields: the local residuals R_p, R_Theta of the iterate enter
     // the condensed residual through G_test^T M^{-1} (R_Theta + H M^{-1}
@@ -438,7 +479,9 @@ namespace pg
     const Materials::VolumetricSplit<dim> &split,
     const double                           pressure,
     Vector<double>                        &residual,
-    FullMatrix<double>                    *tangent)
+    FullMatrix<double>                    *tangent,
+    const ArrayView<const double>         &committed_state,
+    const ArrayView<double>               &trial_state)
   {
     const QuadratureTable<dim> &vol_table =
       (volumetric_table != nullptr ? *volumetric_table : table);
@@ -451,7 +494,9 @@ namespace pg
                                         split,
                                         pressure,
                                         r_u,
-                                        tangent != nullptr ? &k_uu : nullptr);
+                                        tangent != nullptr ? &k_uu : nullptr,
+                                        committed_state,
+                                        trial_state);
     AssertDimension(r_u.size(), n_u);
 
     const FieldBasis<dim>     basis(vol_table, 0);
@@ -507,7 +552,9 @@ namespace pg
                                       Vector<double> &,
                                       FullMatrix<double> *,
                                       const unsigned int,
-                                      CondensedFieldIterate *);
+                                      CondensedFieldIterate *,
+                                      const ArrayView<const double> &,
+                                      const ArrayView<double> &);
   template CondensedPressure
   assemble_condensed_pressure_element(const QuadratureTable<3> &,
                                       const QuadratureTable<3> *,
@@ -516,7 +563,9 @@ namespace pg
                                       Vector<double> &,
                                       FullMatrix<double> *,
                                       const unsigned int,
-                                      CondensedFieldIterate *);
+                                      CondensedFieldIterate *,
+                                      const ArrayView<const double> &,
+                                      const ArrayView<double> &);
   template double
   assemble_incompressible_p0_element(const QuadratureTable<2> &,
                                      const QuadratureTable<2> *,
@@ -524,7 +573,9 @@ namespace pg
                                      const Materials::VolumetricSplit<2> &,
                                      const double,
                                      Vector<double> &,
-                                     FullMatrix<double> *);
+                                     FullMatrix<double> *,
+                                     const ArrayView<const double> &,
+                                     const ArrayView<double> &);
   template double
   assemble_incompressible_p0_element(const QuadratureTable<3> &,
                                      const QuadratureTable<3> *,
@@ -532,5 +583,7 @@ namespace pg
                                      const Materials::VolumetricSplit<3> &,
                                      const double,
                                      Vector<double> &,
-                                     FullMatrix<double> *);
+                                     FullMatrix<double> *,
+                                     const ArrayView<const double> &,
+                                     const ArrayView<double> &);
 } // namespace pg

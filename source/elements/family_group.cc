@@ -174,7 +174,7 @@ namespace pg
       (new_stabilisation.tables == nullptr ||
        (new_stabilisation.tables->size() == family_tables.size() &&
         new_stabilisation.pseudo_material != nullptr &&
-        material.n_state_variables() == 0)) &&
+        new_stabilisation.pseudo_material->n_state_variables() == 0)) &&
         (new_stabilisation.hourglass_constants.empty() ||
          new_stabilisation.hourglass_constants.size() ==
            family_tables.size()) &&
@@ -182,7 +182,7 @@ namespace pg
          (new_stabilisation.implicit_gradients.size() == family_tables.size() &&
           new_stabilisation.second_moments.size() == family_tables.size() &&
           new_stabilisation.pseudo_material != nullptr &&
-          material.n_state_variables() == 0)) &&
+          new_stabilisation.pseudo_material->n_state_variables() == 0)) &&
         condensed_pressure == nullptr,
       ExcInternalError());
     stabilisation = new_stabilisation;
@@ -271,6 +271,10 @@ namespace pg
   unsigned int
   FamilyGroup<dim>::n_evaluation_points(const unsigned int e) const
   {
+    // U1SUnl without the master's terms evaluates the material at the
+    // points of its Unl table only
+    if (stabilisation.tables != nullptr && !stabilisation.master_terms)
+      return (*stabilisation.tables)[e].n_points();
     return family_tables[e].n_points();
   }
 
@@ -296,6 +300,11 @@ namespace pg
     auto &scratch = static_cast<FamilyScratch<dim> &>(scratch_base);
     this->gather(e, u, local.dofs, scratch.y);
     FullMatrix<double> *tangent = local.with_matrix ? &local.matrix : nullptr;
+    // the material's part of the point history (U1SIG keeps its own
+    // entries after it)
+    MaterialStateSlices state(history,
+                              n_evaluation_points(e),
+                              material.n_state_variables());
     if (stabilisation.tables != nullptr)
       {
         const auto &unl_table = (*stabilisation.tables)[e];
@@ -307,13 +316,18 @@ namespace pg
                                    *stabilisation.pseudo_material,
                                    local.residual,
                                    tangent,
-                                   scratch.u1s_unl);
+                                   scratch.u1s_unl,
+                                   state.committed(),
+                                   state.trial());
         else
           assemble_element(unl_table,
                            scratch.y,
                            material,
                            local.residual,
-                           tangent);
+                           tangent,
+                           state.committed(),
+                           state.trial());
+        state.write_back();
         return;
       }
     if (condensed_pressure != nullptr)
@@ -330,7 +344,10 @@ namespace pg
           local.residual,
           local.with_matrix ? &local.matrix : nullptr,
           condensed_pressure_degree,
-          this->condensed_field_iterate(e));
+          this->condensed_field_iterate(e),
+          state.committed(),
+          state.trial());
+        state.write_back();
         return;
       }
     assemble_element(family_tables[e],
@@ -338,8 +355,9 @@ namespace pg
                      material,
                      local.residual,
                      tangent,
-                     history.committed,
-                     history.trial);
+                     state.committed(),
+                     state.trial());
+    state.write_back();
     if (!stabilisation.hourglass_constants.empty())
       {
         const unsigned int k       = this->owned_families[e];
@@ -364,12 +382,16 @@ namespace pg
     if (!stabilisation.implicit_gradients.empty())
       {
         // A~ at the master's F of the last accepted step (the committed
-        // history); the trial history gets this iterate's F
-        AssertDimension(history.committed.size(), dim * dim);
+        // history, after the material's state of the family's one point);
+        // the trial history gets this iterate's F
+        const unsigned int first = material.n_state_variables();
+        AssertDimension(family_tables[e].n_points(), 1);
+        AssertDimension(history.n_variables, first + dim * dim);
+        AssertDimension(history.committed.size(), first + dim * dim);
         Tensor<2, dim> F_accepted;
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
-            F_accepted[i][j] = history.committed[i * dim + j];
+            F_accepted[i][j] = history.committed[first + i * dim + j];
         Tensor<2, dim> P;
         Tensor<4, dim> A;
         stabilisation.pseudo_material->evaluate(F_accepted, P, A);
@@ -383,7 +405,7 @@ namespace pg
           deformation_gradient(family_tables[e], 0, scratch.y);
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
-            history.trial[i * dim + j] = F[i][j];
+            history.trial[first + i * dim + j] = F[i][j];
       }
   }
 

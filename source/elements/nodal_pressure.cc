@@ -13,7 +13,9 @@ namespace pg
     /**
      * The bubble's local residual r_b = sum_q w_q P_q beta_q and its
      * tangent K_bb = sum_q w_q beta_q . A_q . beta_q at the bubble @p u_b,
-     * with F_q = F^0_q + u_b (x) beta_q and P = P_iso + p_q d theta / dF;
+     * with F_q = F^0_q + u_b (x) beta_q and P = P_iso + p_q d theta / dF
+     * (@p point_state: the state of @p material at each point, the
+     * committed material state and p_q; the trial state is discarded);
      * @p scale = sum_q w_q (|P_q| + |A_q|) |beta_q|, the size of r_b's
      * terms (|A| that of P at a unit strain, for states near F = I).
      */
@@ -22,7 +24,7 @@ namespace pg
     bubble_equation(const QuadratureTable<dim>         &table,
                     const std::vector<Tensor<2, dim>>  &F0,
                     const std::vector<Tensor<1, dim>>  &beta,
-                    const std::vector<double>          &p_q,
+                    const std::vector<double>          &point_state,
                     const IsochoricPartAtPressure<dim> &material,
                     const Tensor<1, dim>               &u_b,
                     Eigen::Matrix<double, dim, 1>      &r_b,
@@ -32,17 +34,20 @@ namespace pg
       scale = 0;
       r_b.setZero();
       K_bb.setZero();
-      std::vector<double> unused(1);
+      const unsigned int  n_state = material.n_state_variables();
+      std::vector<double> unused(n_state);
       for (unsigned int q = 0; q < table.n_points(); ++q)
         {
           const Tensor<2, dim> F = F0[q] + outer_product(u_b, beta[q]);
           Tensor<2, dim>       P;
           Tensor<4, dim>       A;
-          material.evaluate_with_state(F,
-                                       make_array_view(&p_q[q], &p_q[q] + 1),
-                                       make_array_view(unused),
-                                       P,
-                                       &A);
+          material.evaluate_with_state(
+            F,
+            make_array_view(point_state.begin() + q * n_state,
+                            point_state.begin() + (q + 1) * n_state),
+            make_array_view(unused),
+            P,
+            &A);
           const double w = table.weights[q];
           scale += w * (P.norm() + A.norm()) * beta[q].norm();
           for (unsigned int i = 0; i < dim; ++i)
@@ -128,9 +133,11 @@ namespace pg
                                  const std::vector<double>         &vartheta,
                                  const Materials::VolumetricSplit<dim> &split,
                                  const bool                             bubble,
-                                 Vector<double>        &residual,
-                                 FullMatrix<double>    *tangent,
-                                 CondensedFieldIterate *iterate)
+                                 Vector<double>                &residual,
+                                 FullMatrix<double>            *tangent,
+                                 CondensedFieldIterate         *iterate,
+                                 const ArrayView<const double> &committed_state,
+                                 const ArrayView<double>       &trial_state)
   {
     const unsigned int n = table.n_nodes, n_q = table.n_points();
     AssertDimension(y.size(), n);
@@ -145,7 +152,16 @@ namespace pg
           p_q[q] += pi[q * n + a] * p[a];
           Theta_q[q] += pi[q * n + a] * vartheta[a];
         }
-    const IsochoricPartAtPressure<dim> material(split, 0., true, true);
+    // the kernel's state per point: the material's, then p_q
+    const IsochoricPartAtPressure<dim> material(split,
+                                                0.,
+                                                true,
+                                                true,
+                                                (committed_state.size() == 0) ?
+                                                  0 :
+                                                  committed_state.size() / n_q);
+    const std::vector<double>          point_state =
+      material.with_pressure_per_point(committed_state, p_q, n_q);
 
     // The kernel's table: the family's, with the bubble as node n whose
     // trial vectors are beta_q = X_q - X_c (eq. 6.15), and y_n = u_b.
@@ -183,16 +199,65 @@ namespace pg
               bubble_equation(table,
                               F0,
                               beta,
-                              p_q,
+                              point_state,
                               material,
                               u_b,
                               r_b,
                               K_bb,
                               scale);
             };
+            // Newton's iteration on r_b(u_b) = 0 from the u_b it finds;
+            // false if it stalls
+            const auto local_newton = [&]() {
+              for (unsigned int it = 0; it < 25 && r_b.norm() > 1e-14 * scale;
+                   ++it)
+                {
+                  const Eigen::Matrix<double, dim, 1> d = K_bb.lu().solve(r_b);
+                  bool                                accepted = false;
+                  for (double step = 1.; step > 1e-3 && !accepted; step /= 2)
+                    {
+                      Tensor<1, dim> trial       = u_b;
+                      double         trial_scale = 0;
+                      for (unsigned int i = 0; i < dim; ++i)
+                        trial[i] -= step * d[i];
+                      try
+                        {
+                          bubble_equation(table,
+                                          F0,
+                                          beta,
+                                          point_state,
+                                          material,
+                                          trial,
+                                          r_trial,
+                                          K_trial,
+                                          trial_scale);
+                        }
+                      catch (const ExceptionBase &)
+                        {
+                          continue; // J <= 0 somewhere: a shorter step
+                        }
+                      if (r_trial.norm() < r_b.norm())
+                        {
+                          u_b      = trial;
+                          r_b      = r_trial;
+                          K_bb     = K_trial;
+                          scale    = trial_scale;
+                          accepted = true;
+                        }
+                    }
+                  // (no decrease at round-off level: converged)
+                  if (!accepted && r_b.norm() <= 1e-10 * scale)
+                    return true;
+                  if (!accepted)
+                    return false;
+                }
+              return true;
+            };
             // from the last bubble where there is one (kept through
             // reset_local_fields()), else, or if that inverts the family
-            // at the new displacement, from u_b = 0
+            // at the new displacement or the iteration stalls from there
+            // (e.g. the bubble of a failed attempt before a step cut),
+            // from u_b = 0
             bool started = false;
             if (iterate != nullptr && iterate->bubble.size() == dim)
               try
@@ -200,54 +265,17 @@ namespace pg
                   for (unsigned int i = 0; i < dim; ++i)
                     u_b[i] = iterate->bubble[i];
                   evaluate_at_u_b();
-                  started = true;
+                  started = local_newton();
                 }
               catch (const ExceptionBase &)
                 {
-                  u_b = Tensor<1, dim>();
+                  started = false;
                 }
             if (!started)
-              evaluate_at_u_b();
-            for (unsigned int it = 0; it < 25 && r_b.norm() > 1e-14 * scale;
-                 ++it)
               {
-                const Eigen::Matrix<double, dim, 1> d = K_bb.lu().solve(r_b);
-                bool                                accepted = false;
-                for (double step = 1.; step > 1e-3 && !accepted; step /= 2)
-                  {
-                    Tensor<1, dim> trial       = u_b;
-                    double         trial_scale = 0;
-                    for (unsigned int i = 0; i < dim; ++i)
-                      trial[i] -= step * d[i];
-                    try
-                      {
-                        bubble_equation(table,
-                                        F0,
-                                        beta,
-                                        p_q,
-                                        material,
-                                        trial,
-                                        r_trial,
-                                        K_trial,
-                                        trial_scale);
-                      }
-                    catch (const ExceptionBase &)
-                      {
-                        continue; // J <= 0 somewhere: a shorter step
-                      }
-                    if (r_trial.norm() < r_b.norm())
-                      {
-                        u_b      = trial;
-                        r_b      = r_trial;
-                        K_bb     = K_trial;
-                        scale    = trial_scale;
-                        accepted = true;
-                      }
-                  }
-                // (no decrease at round-off level: converged)
-                if (!accepted && r_b.norm() <= 1e-10 * scale)
-                  break;
-                AssertThrow(accepted,
+                u_b = Tensor<1, dim>();
+                evaluate_at_u_b();
+                AssertThrow(local_newton(),
                             ExcMessage(
                               "The bubble of an Unl+P1C family has no local "
                               "equilibrium at this state (its local Newton "
@@ -273,14 +301,15 @@ namespace pg
     const unsigned int  N_u = n_u * dim, N = N_u + 2 * n;
     Vector<double>      r_u;
     FullMatrix<double>  K_u;
-    std::vector<double> unused(n_q);
+    std::vector<double> trial_point_state(point_state.size());
     assemble_element(kernel_table,
                      y_u,
                      material,
                      r_u,
                      full_tangent ? &K_u : nullptr,
-                     make_array_view(p_q),
-                     make_array_view(unused));
+                     make_array_view(point_state),
+                     make_array_view(trial_point_state));
+    material.extract_material_state(trial_point_state, trial_state);
     Eigen::VectorXd r = Eigen::VectorXd::Zero(N);
     Eigen::MatrixXd K;
     for (unsigned int i = 0; i < N_u; ++i)
@@ -407,7 +436,9 @@ namespace pg
                                  const bool,
                                  Vector<double> &,
                                  FullMatrix<double> *,
-                                 CondensedFieldIterate *);
+                                 CondensedFieldIterate *,
+                                 const ArrayView<const double> &,
+                                 const ArrayView<double> &);
   template void
   assemble_nodal_pressure_family(const QuadratureTable<3> &,
                                  const std::vector<Tensor<1, 3>> &,
@@ -417,5 +448,7 @@ namespace pg
                                  const bool,
                                  Vector<double> &,
                                  FullMatrix<double> *,
-                                 CondensedFieldIterate *);
+                                 CondensedFieldIterate *,
+                                 const ArrayView<const double> &,
+                                 const ArrayView<double> &);
 } // namespace pg

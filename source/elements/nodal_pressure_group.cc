@@ -106,7 +106,7 @@ namespace pg
   void
   NodalPressureFamilyGroup<dim>::assemble(const unsigned int           e,
                                           const LinearAlgebra::Vector &u,
-                                          const ElementHistory &,
+                                          const ElementHistory        &history,
                                           GroupScratch &scratch_base,
                                           LocalSystem  &local) const
   {
@@ -131,7 +131,9 @@ namespace pg
                                    local.residual,
                                    local.with_matrix ? &local.matrix : nullptr,
                                    bubble ? this->condensed_field_iterate(e) :
-                                            nullptr);
+                                            nullptr,
+                                   history.committed,
+                                   history.trial);
   }
 
 
@@ -198,7 +200,7 @@ namespace pg
   void
   IncompressibleFamilyGroup<dim>::assemble(const unsigned int           e,
                                            const LinearAlgebra::Vector &u,
-                                           const ElementHistory &,
+                                           const ElementHistory        &history,
                                            GroupScratch &scratch_base,
                                            LocalSystem  &local) const
   {
@@ -216,7 +218,9 @@ namespace pg
       material,
       pressure,
       local.residual,
-      local.with_matrix ? &local.matrix : nullptr);
+      local.with_matrix ? &local.matrix : nullptr,
+      history.committed,
+      history.trial);
   }
 
 

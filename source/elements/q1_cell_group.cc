@@ -148,24 +148,33 @@ namespace pg
       for (unsigned int c = 0; c < dim; ++c)
         scratch.y[b][c] = cell->vertex(b)[c] - cell->vertex(0)[c] +
                           u_at[local.dofs[b * dim + c]];
+    // the material's part of the point history (U1SIG keeps its own
+    // entries after it in the same store)
+    MaterialStateSlices state(history,
+                              scratch.table.n_points(),
+                              material.n_state_variables());
     if (condensed_pressure != nullptr)
-      assemble_condensed_pressure_element<dim>(
-        scratch.table,
-        nullptr,
-        scratch.y,
-        *condensed_pressure,
-        local.residual,
-        local.with_matrix ? &local.matrix : nullptr,
-        0,
-        this->condensed_field_iterate(e));
+      assemble_condensed_pressure_element<dim>(scratch.table,
+                                               nullptr,
+                                               scratch.y,
+                                               *condensed_pressure,
+                                               local.residual,
+                                               local.with_matrix ?
+                                                 &local.matrix :
+                                                 nullptr,
+                                               0,
+                                               this->condensed_field_iterate(e),
+                                               state.committed(),
+                                               state.trial());
     else
       assemble_element(scratch.table,
                        scratch.y,
                        material,
                        local.residual,
                        local.with_matrix ? &local.matrix : nullptr,
-                       history.committed,
-                       history.trial);
+                       state.committed(),
+                       state.trial());
+    state.write_back();
     if (scratch.load_values != nullptr)
       {
         scratch.load_values->reinit(

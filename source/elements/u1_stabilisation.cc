@@ -15,7 +15,9 @@ namespace pg
                            const Materials::Material<dim>    &pseudo_material,
                            Vector<double>                    &residual,
                            FullMatrix<double>                *tangent,
-                           U1SUnlScratch                     &scratch)
+                           U1SUnlScratch                     &scratch,
+                           const ArrayView<const double>     &committed_state,
+                           const ArrayView<double>           &trial_state)
   {
     AssertDimension(u1_table.n_nodes, unl_table.n_nodes);
     FullMatrix<double> *term_tangent =
@@ -26,7 +28,13 @@ namespace pg
         tangent->add(sign, scratch.tangent);
     };
     // V^k W(F^{kk}), then - V^k W~(F^{kk}) + sum_j w^{kj} W~(F^{kj})
-    assemble_element(u1_table, y, material, residual, tangent);
+    assemble_element(u1_table,
+                     y,
+                     material,
+                     residual,
+                     tangent,
+                     committed_state,
+                     trial_state);
     assemble_element(u1_table,
                      y,
                      pseudo_material,
@@ -212,7 +220,9 @@ namespace pg
                            const Materials::Material<2> &,
                            Vector<double> &,
                            FullMatrix<double> *,
-                           U1SUnlScratch &);
+                           U1SUnlScratch &,
+                           const ArrayView<const double> &,
+                           const ArrayView<double> &);
   template void
   assemble_u1s_unl_element(const QuadratureTable<3> &,
                            const QuadratureTable<3> &,
@@ -221,7 +231,9 @@ namespace pg
                            const Materials::Material<3> &,
                            Vector<double> &,
                            FullMatrix<double> *,
-                           U1SUnlScratch &);
+                           U1SUnlScratch &,
+                           const ArrayView<const double> &,
+                           const ArrayView<double> &);
   template void
   add_hourglass_force(const QuadratureTable<2> &,
                       const std::vector<Tensor<1, 2>> &,

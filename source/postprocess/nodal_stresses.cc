@@ -50,6 +50,10 @@ namespace pg
       const auto &meshfree      = *view.meshfree;
       // every FE cell's vertex stresses: from the gathered displacement
       const Vector<double> u_all = view.gather_displacement();
+      // a material with history: the committed state of the Gauss point at
+      // each corner (of the one point of a simplex), of each particle's
+      // family at its point 0
+      const CommittedStates states = view.committed_states(); // collective
 
       const unsigned int        n_vertices = triangulation.n_vertices();
       std::vector<Tensor<2, 3>> fe_stress(n_vertices);
@@ -94,7 +98,15 @@ namespace pg
                       }
                     ++n_centre;
                   }
-                fe_stress[cell->vertex_index(v)] += material.cauchy_stress(F);
+                fe_stress[cell->vertex_index(v)] +=
+                  states.n_material == 0 ?
+                    material.cauchy_stress(F) :
+                    material.cauchy_stress_with_state(
+                      F,
+                      states.cell(cell->active_cell_index(),
+                                  states.points_per_cell == cell->n_vertices() ?
+                                    v :
+                                    0));
                 ++fe_cells[cell->vertex_index(v)];
               }
           }
@@ -114,10 +126,11 @@ namespace pg
         if (fe_cells[particles.vertex(k)] > 0)
           summary.max_interface_stress_jump =
             std::max(summary.max_interface_stress_jump,
-                     std::abs(
-                       cauchy_stress_or_nan(material, particle_F[k])[0][0] -
-                       fe_stress[particles.vertex(k)][0][0] /
-                         fe_cells[particles.vertex(k)]));
+                     std::abs(cauchy_stress_or_nan(material,
+                                                   particle_F[k],
+                                                   states.particle(k))[0][0] -
+                              fe_stress[particles.vertex(k)][0][0] /
+                                fe_cells[particles.vertex(k)]));
 
       // (IUnlP0: the material is the isochoric part, and the pressure of
       // the particle's family, a DoF, adds p I; no FE cells. Its exact
@@ -131,7 +144,8 @@ namespace pg
                      Tensor<2, 3>(fe_stress[vertex] / fe_cells[vertex]) :
                      Tensor<2, 3>();
         const unsigned int k = particle_at[vertex];
-        Tensor<2, 3> sigma   = cauchy_stress_or_nan(material, particle_F[k]);
+        Tensor<2, 3>       sigma =
+          cauchy_stress_or_nan(material, particle_F[k], states.particle(k));
         if (incompressible)
           sigma += u_all[particles.dof(k, dim)] *
                    Tensor<2, 3>(unit_symmetric_tensor<3>());

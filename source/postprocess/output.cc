@@ -30,11 +30,13 @@ namespace pg
   template <int dim>
   Tensor<2, 3>
   cauchy_stress_or_nan(const Materials::Material<dim> &material,
-                       const Tensor<2, dim>           &F)
+                       const Tensor<2, dim>           &F,
+                       const ArrayView<const double>  &state)
   {
     try
       {
-        return material.cauchy_stress(F);
+        return state.size() == 0 ? material.cauchy_stress(F) :
+                                   material.cauchy_stress_with_state(F, state);
       }
     catch (...)
       {
@@ -53,7 +55,8 @@ namespace pg
   stress_field_values(const Materials::Material<dim> &material,
                       const Tensor<2, dim>           &F,
                       std::vector<double>            &values,
-                      const double                    pressure)
+                      const double                    pressure,
+                      const ArrayView<const double>  &state)
   {
     values.clear();
     for (unsigned int i = 0; i < dim; ++i)
@@ -62,7 +65,7 @@ namespace pg
     // Where F is inverted (J <= 0) the stress is undefined: written as NaN,
     // so ParaView shows the hole instead of a made-up value. This happens
     // for the Q1 interpolant of badly wrong PG solutions on meshfree cells.
-    Tensor<2, 3> s = cauchy_stress_or_nan(material, F);
+    Tensor<2, 3> s = cauchy_stress_or_nan(material, F, state);
     for (unsigned int i = 0; i < 3; ++i)
       s[i][i] += pressure;
     for (const double v :
@@ -99,6 +102,18 @@ namespace pg
 
   template <int dim>
   void
+  StressPostprocessor<dim>::set_states(
+    const Postprocess::CommittedStates     *new_states,
+    const std::function<int(unsigned int)> &new_particle_at)
+  {
+    states      = new_states;
+    particle_at = new_particle_at;
+  }
+
+
+
+  template <int dim>
+  void
   StressPostprocessor<dim>::evaluate_vector_field(
     const DataPostprocessorInputs::Vector<dim> &inputs,
     std::vector<Vector<double>>                &computed_quantities) const
@@ -118,13 +133,33 @@ namespace pg
       {
         Tensor<2, dim> F;
         double         pressure = 0.;
+        unsigned int   nearest  = 0;
+        if (from_particles || states != nullptr)
+          for (const unsigned int v : cell->vertex_indices())
+            if (cell->vertex(v).distance(inputs.evaluation_points[p]) <
+                cell->vertex(nearest).distance(inputs.evaluation_points[p]))
+              nearest = v;
+        ArrayView<const double> state;
+        if (states != nullptr && states->n_material > 0)
+          {
+            if (from_particles)
+              {
+                const int k = particle_at(cell->vertex_index(nearest));
+                if (k >= 0)
+                  state = states->particle(k);
+              }
+            else if (!meshfree_cell.empty() &&
+                     meshfree_cell[cell->active_cell_index()])
+              ; // a meshfree cell without particles at its corners
+            else
+              state =
+                states->cell(cell->active_cell_index(),
+                             states->points_per_cell == cell->n_vertices() ?
+                               nearest :
+                               0);
+          }
         if (from_particles)
           {
-            unsigned int nearest = 0;
-            for (const unsigned int v : cell->vertex_indices())
-              if (cell->vertex(v).distance(inputs.evaluation_points[p]) <
-                  cell->vertex(nearest).distance(inputs.evaluation_points[p]))
-                nearest = v;
             F = *particle_F(cell->vertex_index(nearest));
             if (particle_pressure)
               pressure = particle_pressure(cell->vertex_index(nearest));
@@ -135,7 +170,7 @@ namespace pg
               F[i] = inputs.solution_gradients[p][i];
               F[i][i] += 1.;
             }
-        stress_field_values(material, F, values, pressure);
+        stress_field_values(material, F, values, pressure, state);
         for (unsigned int c = 0; c < values.size(); ++c)
           computed_quantities[p][c] = values[c];
       }
@@ -325,6 +360,8 @@ namespace pg
         << json_number(s.max_interior_second_order_residual) << ",\n"
         << "  \"condensed_pressure_range\": "
         << json_list(s.condensed_pressure_range) << ",\n";
+    for (const auto &[name, value] : s.state_output_maxima)
+      out << "  \"max_" << name << "\": " << json_number(value) << ",\n";
     const auto json_named_lists =
       [&out](
         const std::string                                              &key,
@@ -454,16 +491,22 @@ namespace pg
   stress_field_values<2>(const Materials::Material<2> &,
                          const Tensor<2, 2> &,
                          std::vector<double> &,
-                         const double);
+                         const double,
+                         const ArrayView<const double> &);
   template void
   stress_field_values<3>(const Materials::Material<3> &,
                          const Tensor<2, 3> &,
                          std::vector<double> &,
-                         const double);
+                         const double,
+                         const ArrayView<const double> &);
   template Tensor<2, 3>
-  cauchy_stress_or_nan<2>(const Materials::Material<2> &, const Tensor<2, 2> &);
+  cauchy_stress_or_nan<2>(const Materials::Material<2> &,
+                          const Tensor<2, 2> &,
+                          const ArrayView<const double> &);
   template Tensor<2, 3>
-  cauchy_stress_or_nan<3>(const Materials::Material<3> &, const Tensor<2, 3> &);
+  cauchy_stress_or_nan<3>(const Materials::Material<3> &,
+                          const Tensor<2, 3> &,
+                          const ArrayView<const double> &);
   template class StressPostprocessor<2>;
   template class StressPostprocessor<3>;
   template class ParticleOutput<2>;

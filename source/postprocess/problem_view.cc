@@ -1,6 +1,9 @@
 #include <pg/dofs/relevant_dofs.h>
 #include <pg/postprocess/problem_view.h>
 
+#include <algorithm>
+#include <limits>
+
 namespace pg
 {
   namespace Postprocess
@@ -59,6 +62,89 @@ namespace pg
       const Vector<double> &u_all) const
     {
       return deformation_gradient(*this, k, u_all);
+    }
+
+
+
+    template <int dim>
+    CommittedStates
+    ProblemView<dim>::committed_states() const
+    {
+      CommittedStates states;
+      if (history == nullptr || material->n_state_variables() == 0)
+        return states;
+      const unsigned int n   = material->n_state_variables();
+      states.n_material      = n;
+      states.points_per_cell = 0;
+      for (unsigned int e = 0; e < owned_fe_cells->size(); ++e)
+        states.points_per_cell =
+          std::max(states.points_per_cell, history->n_points(0, e));
+      states.points_per_cell =
+        Utilities::MPI::max(states.points_per_cell, mpi_communicator);
+      // each cell and family is owned by one rank: the others add zeros
+      states.cells.assign(static_cast<std::size_t>(
+                            triangulation->n_active_cells()) *
+                            states.points_per_cell * n,
+                          0.);
+      states.particles
+        .assign(static_cast<std::size_t>(particles->n_particles()) * n, 0.);
+      for (unsigned int e = 0; e < owned_fe_cells->size(); ++e)
+        {
+          const unsigned int c = (*owned_fe_cells)[e]->active_cell_index();
+          for (unsigned int q = 0; q < history->n_points(0, e); ++q)
+            {
+              const auto state = history->committed(0, e, q);
+              for (unsigned int i = 0; i < n; ++i)
+                states.cells[(c * states.points_per_cell + q) * n + i] =
+                  state[i];
+            }
+        }
+      if (history->n_groups() > 1)
+        for (unsigned int e = 0; e < owned_families->size(); ++e)
+          if (history->n_points(1, e) > 0)
+            {
+              const unsigned int k     = (*owned_families)[e];
+              const auto         state = history->committed(1, e, 0);
+              for (unsigned int i = 0; i < n; ++i)
+                states.particles[k * n + i] = state[i];
+            }
+      if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+        {
+          Utilities::MPI::sum(states.cells, mpi_communicator, states.cells);
+          Utilities::MPI::sum(states.particles,
+                              mpi_communicator,
+                              states.particles);
+        }
+      return states;
+    }
+
+
+
+    template <int dim>
+    std::vector<double>
+    ProblemView<dim>::maximum_state_outputs() const
+    {
+      const unsigned int  n_outputs = material->state_output_names().size();
+      std::vector<double> maxima(n_outputs,
+                                 -std::numeric_limits<double>::max());
+      if (n_outputs == 0)
+        return maxima;
+      const unsigned int  n = material->n_state_variables();
+      std::vector<double> values(n_outputs);
+      if (history != nullptr && n > 0)
+        for (unsigned int g = 0; g < history->n_groups(); ++g)
+          for (unsigned int e = 0; e < history->n_elements(g); ++e)
+            for (unsigned int q = 0; q < history->n_points(g, e); ++q)
+              {
+                const auto state = history->committed(g, e, q);
+                material->state_outputs(make_array_view(state.begin(),
+                                                        state.begin() + n),
+                                        make_array_view(values));
+                for (unsigned int i = 0; i < n_outputs; ++i)
+                  maxima[i] = std::max(maxima[i], values[i]);
+              }
+      Utilities::MPI::max(maxima, mpi_communicator, maxima);
+      return maxima;
     }
 
 

@@ -77,6 +77,17 @@ namespace pg
           summary.condensed_pressure_range = {pressure->min_pressure,
                                               pressure->max_pressure};
         }
+      // A material with history: the largest value of each state output
+      // over the committed points (collective)
+      const std::vector<std::string> state_names =
+        view.material->state_output_names();
+      if (!state_names.empty())
+        {
+          const std::vector<double> maxima = view.maximum_state_outputs();
+          summary.state_output_maxima.clear();
+          for (unsigned int i = 0; i < state_names.size(); ++i)
+            summary.state_output_maxima.emplace_back(state_names[i], maxima[i]);
+        }
       if (view.root)
         {
           std::ofstream stat(dir + "statistics.txt");
@@ -138,14 +149,52 @@ namespace pg
         family_pressure = [&](const unsigned int v) {
           return pressure->particle_pressure[particle_at[v]];
         };
-      const StressPostprocessor<dim> stress(
+      StressPostprocessor<dim> stress(
         material,
         *view.meshfree,
         [&](const unsigned int v) -> const Tensor<2, dim> * {
           return particle_at[v] >= 0 ? &particle_F[particle_at[v]] : nullptr;
         },
         family_pressure);
+      // a material with history: stresses from the committed state, and
+      // its state outputs as cell data (the mean over the cell's Gauss
+      // points, or over the particles at a meshfree cell's vertices)
+      const CommittedStates states = view.committed_states(); // collective
+      stress.set_states(&states,
+                        [&](const unsigned int v) { return particle_at[v]; });
       data_out.add_data_vector(u_full, stress);
+      std::vector<Vector<double>> cell_state_outputs(
+        state_names.size(),
+        Vector<double>(view.triangulation->n_active_cells()));
+      if (!state_names.empty() && states.n_material > 0)
+        {
+          std::vector<double> values(state_names.size());
+          for (const auto &cell : view.triangulation->active_cell_iterators())
+            {
+              const unsigned int c = cell->active_cell_index();
+              std::vector<ArrayView<const double>> points;
+              if ((*view.meshfree)[c])
+                {
+                  for (const unsigned int v : cell->vertex_indices())
+                    if (particle_at[cell->vertex_index(v)] >= 0)
+                      points.push_back(
+                        states.particle(particle_at[cell->vertex_index(v)]));
+                }
+              else
+                for (unsigned int q = 0; q < states.points_per_cell; ++q)
+                  points.push_back(states.cell(c, q));
+              for (const auto &state : points)
+                {
+                  material.state_outputs(state, make_array_view(values));
+                  for (unsigned int i = 0; i < values.size(); ++i)
+                    cell_state_outputs[i][c] += values[i] / points.size();
+                }
+            }
+        }
+      for (unsigned int i = 0; i < state_names.size(); ++i)
+        data_out.add_data_vector(cell_state_outputs[i],
+                                 state_names[i],
+                                 DataOut<dim>::type_cell_data);
       const auto   &meshfree = *view.meshfree;
       Vector<float> meshfree_cell(view.triangulation->n_active_cells());
       for (unsigned int c = 0; c < meshfree.size(); ++c)
@@ -177,8 +226,11 @@ namespace pg
           particle_names.push_back("condensed_pressure");
           particle_names.push_back("condensed_dilatation");
         }
+      // the state outputs at point 0 of the particle's family
+      for (const std::string &n : state_names)
+        particle_names.push_back(n);
       ParticleOutput<dim> particle_out(particle_names);
-      std::vector<double> data, stress_values;
+      std::vector<double> data, stress_values, state_values(state_names.size());
       for (const unsigned int k : *view.owned_families)
         {
           data.clear();
@@ -188,7 +240,8 @@ namespace pg
                               particle_F[k],
                               stress_values,
                               incompressible ? pressure->particle_pressure[k] :
-                                               0.);
+                                               0.,
+                              states.particle(k));
           data.insert(data.end(), stress_values.begin(), stress_values.end());
           data.push_back(particles.volume(k));
           for (unsigned int c = 0; c < dim; ++c)
@@ -197,6 +250,13 @@ namespace pg
             {
               data.push_back(pressure->particle_pressure[k]);
               data.push_back(pressure->particle_dilatation[k]);
+            }
+          if (!state_names.empty())
+            {
+              if (states.n_material > 0)
+                material.state_outputs(states.particle(k),
+                                       make_array_view(state_values));
+              data.insert(data.end(), state_values.begin(), state_values.end());
             }
           particle_out.add_particle(particles.position(k), data);
         }

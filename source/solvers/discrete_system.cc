@@ -132,6 +132,17 @@ namespace pg
                                                   material,
                                                   loads,
                                                   condensed_pressure);
+    // CPD's bonds have their own constitutive law (no material, no state)
+    AssertThrow(!discretization.cpd || material.n_state_variables() == 0,
+                ExcMessage(
+                  "'Discretization/Formulation = " +
+                  prm.discretization.formulation +
+                  "' (CPD) evaluates its own bond law, not the material of "
+                  "subsection 'Material', and cannot carry the history of "
+                  "'Material/Model = " +
+                  prm.material.model +
+                  "'. Choose another formulation code for a material with "
+                  "history, or a material without."));
     if (discretization.cpd)
       family_group =
         std::make_unique<CpdGroup<dim>>(discretization.owned_families,
@@ -172,10 +183,18 @@ namespace pg
           formulation.condensed_pressure_degree());
         // eq. (6.20) without plasticity: E~ = E, nu~ = min(0.49, nu)
         const double nu = prm.material.poissons_ratio;
+        // (a material with history: the pseudo-material is the elastic
+        // isochoric-volumetric neo-Hooke of the same constants, which is
+        // stateless)
         if (formulation.points == FormulationCode::Points::u1s_unl ||
             formulation.implicit_gradients)
-          pseudo_material = Materials::create_material<dim>(
-            prm.material.with_poissons_ratio(std::min(0.49, nu)));
+          {
+            Parameters::Material pseudo =
+              prm.material.with_poissons_ratio(std::min(0.49, nu));
+            if (material.n_state_variables() > 0)
+              pseudo.model = "isochoric-volumetric neo-Hooke";
+            pseudo_material = Materials::create_material<dim>(pseudo);
+          }
         if (formulation.points == FormulationCode::Points::u1s_unl)
           {
             U1Stabilisation<dim> stabilisation;
@@ -230,22 +249,21 @@ namespace pg
 
     // The state at every evaluation point of every group (the tables are
     // final now: the VC correction keeps their points).
-    // (U1SIG: the master's F of the last accepted step, dim^2 values,
-    // initially 1; its material is stateless)
-    if (formulation.implicit_gradients)
-      history.reinit(assembler->evaluation_points(),
-                     dim * dim,
-                     [](const ArrayView<double> &state) {
-                       for (unsigned int i = 0; i < dim; ++i)
-                         for (unsigned int j = 0; j < dim; ++j)
-                           state[i * dim + j] = (i == j ? 1. : 0.);
-                     });
-    else
-      history.reinit(assembler->evaluation_points(),
-                     material.n_state_variables(),
-                     [this](const ArrayView<double> &state) {
-                       material.initialize_state(state);
-                     });
+    // Per point: the material's n_state_variables() values, then a
+    // kernel's own entries (U1SIG: the master's F of the last accepted
+    // step, dim^2 values, initially 1; doc/architecture.md, "History").
+    const unsigned int n_material = material.n_state_variables();
+    const unsigned int n_kernel =
+      formulation.implicit_gradients ? dim * dim : 0;
+    history.reinit(
+      assembler->evaluation_points(),
+      n_material + n_kernel,
+      [this, n_material, n_kernel](const ArrayView<double> &state) {
+        material.initialize_state(
+          make_array_view(state.begin(), state.begin() + n_material));
+        for (unsigned int i = 0; i < n_kernel; ++i)
+          state[n_material + i] = (i / dim == i % dim ? 1. : 0.);
+      });
     assembler->set_history(&history);
   }
 
@@ -273,7 +291,6 @@ namespace pg
   U1Stabilisation<dim>
   DiscreteSystem<dim>::implicit_gradient_stabilisation() const
   {
-    AssertThrow(material.n_state_variables() == 0, ExcNotImplemented());
     const auto          &particles = discretization.particles;
     U1Stabilisation<dim> stabilisation;
     stabilisation.pseudo_material = pseudo_material.get();
@@ -652,6 +669,15 @@ namespace pg
       std::make_unique<Assembler<dim>>(zero_constraints,
                                        std::vector<ElementGroup<dim> *>{
                                          amg_cells.get()});
+    if (material.n_state_variables() > 0)
+      {
+        amg_history.reinit(amg_assembler->evaluation_points(),
+                           material.n_state_variables(),
+                           [this](const ArrayView<double> &state) {
+                             material.initialize_state(state);
+                           });
+        amg_assembler->set_history(&amg_history);
+      }
     DynamicSparsityPattern dsp(discretization.relevant_dofs);
     amg_assembler->add_sparsity(dsp);
     SparsityTools::distribute_sparsity_pattern(dsp,

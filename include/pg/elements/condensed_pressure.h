@@ -5,6 +5,7 @@
 #include <pg/elements/quadrature_table.h>
 #include <pg/materials/volumetric_split.h>
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -149,6 +150,13 @@ namespace pg
    * which at local equilibrium (R_p = R_Theta = 0) are the closed form's.
    * An assembly with a tangent stores the linearisation that
    * update_condensed_fields() applies.
+   *
+   * A material with history: the isochoric part carries it
+   * (VolumetricSplit::evaluate_isochoric_with_state() at every point of
+   * @p table, from @p committed_state, writing @p trial_state: the
+   * element's slices of the material's state, n_state_variables() values
+   * per point of @p table); the volumetric part W_vol(Theta) stays
+   * elastic. Empty slices: a stateless material.
    */
   template <int dim>
   CondensedPressure
@@ -159,8 +167,10 @@ namespace pg
     const Materials::VolumetricSplit<dim> &material,
     Vector<double>                        &residual,
     FullMatrix<double>                    *tangent,
-    const unsigned int                     degree  = 0,
-    CondensedFieldIterate                 *iterate = nullptr);
+    const unsigned int                     degree          = 0,
+    CondensedFieldIterate                 *iterate         = nullptr,
+    const ArrayView<const double>         &committed_state = {},
+    const ArrayView<double>               &trial_state     = {});
 
   /**
    * The family residual and tangent of IUnlP0, the incompressible UnlP0
@@ -187,7 +197,8 @@ namespace pg
    * dim). Units: force (u rows), volume (p row). Overwrites @p residual and
    * @p tangent (nullptr: residual only). Throws if J <= 0 at a point.
    * Returns the mean volume measure theta-bar of the volumetric points
-   * (1 when the constraint holds).
+   * (1 when the constraint holds). The material's state as in
+   * assemble_condensed_pressure_element() (the isochoric part carries it).
    */
   template <int dim>
   double
@@ -198,7 +209,9 @@ namespace pg
     const Materials::VolumetricSplit<dim> &material,
     const double                           pressure,
     Vector<double>                        &residual,
-    FullMatrix<double>                    *tangent);
+    FullMatrix<double>                    *tangent,
+    const ArrayView<const double>         &committed_state = {},
+    const ArrayView<double>               &trial_state     = {});
 } // namespace pg
 
 #endif

@@ -40,6 +40,86 @@ namespace pg
   {
     ArrayView<const double> committed;
     ArrayView<double>       trial;
+    /**
+     * Values per point in the store: the material's n_state_variables(),
+     * followed by a kernel's own entries (U1SIG: the master's accepted F,
+     * dim^2 values); 0 for an empty history.
+     */
+    unsigned int n_variables = 0;
+  };
+
+  /**
+   * The material's part of an element's history: the first @p n_material
+   * of the history's n_variables values of each of @p n_points points, as
+   * the contiguous slices assemble_element() takes. Where the store holds
+   * nothing else the slices are the history's own; otherwise they are
+   * copies, and write_back() copies the trial values into the history.
+   */
+  class MaterialStateSlices
+  {
+  public:
+    MaterialStateSlices(const ElementHistory &history,
+                        const unsigned int    n_points,
+                        const unsigned int    n_material)
+      : history(history)
+      , n_points(n_points)
+      , n_material(n_material)
+      , copied(n_material > 0 && history.n_variables != n_material)
+    {
+      AssertThrow(
+        n_material == 0 ||
+          (history.n_variables >= n_material &&
+           history.committed.size() == n_points * history.n_variables),
+        ExcMessage("The point history holds " +
+                   std::to_string(history.committed.size()) + " values for " +
+                   std::to_string(n_points) + " points of a material with " +
+                   std::to_string(n_material) + " state variables per point."));
+      if (copied)
+        {
+          committed_copy.resize(n_points * n_material);
+          trial_copy.resize(n_points * n_material);
+          for (unsigned int q = 0; q < n_points; ++q)
+            for (unsigned int i = 0; i < n_material; ++i)
+              committed_copy[q * n_material + i] =
+                history.committed[q * history.n_variables + i];
+        }
+    }
+
+    /** The committed material state of all points. */
+    ArrayView<const double>
+    committed() const
+    {
+      if (n_material == 0)
+        return {};
+      return copied ? make_array_view(committed_copy) : history.committed;
+    }
+
+    /** The trial material state of all points. */
+    ArrayView<double>
+    trial()
+    {
+      if (n_material == 0)
+        return {};
+      return copied ? make_array_view(trial_copy) : history.trial;
+    }
+
+    /** Copy the trial values into the history (nothing if not copied). */
+    void
+    write_back() const
+    {
+      if (!copied)
+        return;
+      for (unsigned int q = 0; q < n_points; ++q)
+        for (unsigned int i = 0; i < n_material; ++i)
+          history.trial[q * history.n_variables + i] =
+            trial_copy[q * n_material + i];
+    }
+
+  private:
+    const ElementHistory history;
+    const unsigned int   n_points, n_material;
+    const bool           copied;
+    std::vector<double>  committed_copy, trial_copy;
   };
 
   /** What one element hands to the global system. */

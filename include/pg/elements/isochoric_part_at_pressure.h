@@ -7,6 +7,8 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <vector>
+
 namespace pg
 {
   /**
@@ -17,9 +19,16 @@ namespace pg
    *   A = A_iso(F) + p d^2 theta / dF dF
    * (theta = J: p J F^{-T} and p J (F^{-1}_{BA} F^{-1}_{DC} - F^{-1}_{BC}
    * F^{-1}_{DA})). The part through dp/du is added by the element (it
-   * couples the points). With P0 fields p is the element's constant;
-   * with P1 fields (U2P1) it differs per point and is handed to the
-   * kernel as the point's one "state variable" (read, never changed).
+   * couples the points).
+   *
+   * Its state per point (what the kernel hands it) is the material's state
+   * (@p n_material_state values: the isochoric part carries the history,
+   * VolumetricSplit::evaluate_isochoric_with_state()) followed, with
+   * @p pressure_per_point (P1 fields: U2P1, U2P1C, Unl+P1C, where p differs
+   * per point), by the point's pressure: read, copied unchanged to the
+   * trial state. With P0 fields p is the element's constant @p pressure.
+   * with_pressure_per_point() builds that layout from the material's
+   * slices.
    */
   template <int dim>
   class IsochoricPartAtPressure : public Materials::Material<dim>
@@ -27,12 +36,14 @@ namespace pg
   public:
     IsochoricPartAtPressure(const Materials::VolumetricSplit<dim> &split,
                             const double                           pressure,
-                            const bool with_isochoric,
-                            const bool pressure_per_point = false)
+                            const bool         with_isochoric,
+                            const bool         pressure_per_point = false,
+                            const unsigned int n_material_state   = 0)
       : split(split)
       , pressure(pressure)
       , with_isochoric(with_isochoric)
       , pressure_per_point(pressure_per_point)
+      , n_material_state(with_isochoric ? n_material_state : 0)
     {}
 
     void
@@ -40,32 +51,42 @@ namespace pg
              Tensor<2, dim>       &P,
              Tensor<4, dim>       &A) const override
     {
-      evaluate_at(F, pressure, P, A);
+      Assert(n_state_variables() == 0, ExcInternalError());
+      evaluate_at(F, {}, {}, pressure, P, &A);
     }
 
     unsigned int
     n_state_variables() const override
     {
-      return pressure_per_point ? 1 : 0;
+      return n_material_state + (pressure_per_point ? 1 : 0);
     }
 
     void
     evaluate_with_state(const Tensor<2, dim>          &F,
-                        const ArrayView<const double> &point_pressure,
+                        const ArrayView<const double> &committed_state,
                         const ArrayView<double>       &trial_state,
                         Tensor<2, dim>                &P,
                         Tensor<4, dim>                *A) const override
     {
-      Tensor<4, dim> A_local;
-      evaluate_at(F, point_pressure[0], P, A_local);
-      trial_state[0] = point_pressure[0];
-      if (A != nullptr)
-        *A = A_local;
+      AssertDimension(committed_state.size(), n_state_variables());
+      const double p =
+        pressure_per_point ? committed_state[n_material_state] : pressure;
+      evaluate_at(F,
+                  make_array_view(committed_state.begin(),
+                                  committed_state.begin() + n_material_state),
+                  make_array_view(trial_state.begin(),
+                                  trial_state.begin() + n_material_state),
+                  p,
+                  P,
+                  A);
+      if (pressure_per_point)
+        trial_state[n_material_state] = p;
     }
 
     Tensor<2, dim>
     first_piola_stress(const Tensor<2, dim> &F) const override
     {
+      Assert(n_state_variables() == 0, ExcInternalError());
       Tensor<2, dim> P = pressure * split.volume_measure_derivative(F);
       if (with_isochoric)
         P += split.isochoric_first_piola_stress(F);
@@ -86,28 +107,80 @@ namespace pg
       return 0;
     }
 
+    /**
+     * The state slices of this wrapper for @p n_points points: per point
+     * the material's n_material_state values of @p material_state
+     * followed, with a pressure per point, by @p point_pressures[q].
+     */
+    std::vector<double>
+    with_pressure_per_point(const ArrayView<const double> &material_state,
+                            const std::vector<double>     &point_pressures,
+                            const unsigned int             n_points) const
+    {
+      const unsigned int n = n_state_variables();
+      AssertDimension(material_state.size(), n_points * n_material_state);
+      std::vector<double> state(n_points * n);
+      for (unsigned int q = 0; q < n_points; ++q)
+        {
+          for (unsigned int i = 0; i < n_material_state; ++i)
+            state[q * n + i] = material_state[q * n_material_state + i];
+          if (pressure_per_point)
+            state[q * n + n_material_state] = point_pressures[q];
+        }
+      return state;
+    }
+
+    /**
+     * The material's part of the wrapper's state @p state (the inverse of
+     * with_pressure_per_point()) into @p material_state.
+     */
+    void
+    extract_material_state(const std::vector<double> &state,
+                           const ArrayView<double>   &material_state) const
+    {
+      const unsigned int n        = n_state_variables();
+      const unsigned int n_points = (n == 0 ? 0 : state.size() / n);
+      AssertDimension(material_state.size(), n_points * n_material_state);
+      for (unsigned int q = 0; q < n_points; ++q)
+        for (unsigned int i = 0; i < n_material_state; ++i)
+          material_state[q * n_material_state + i] = state[q * n + i];
+    }
+
   private:
     void
-    evaluate_at(const Tensor<2, dim> &F,
-                const double          p,
-                Tensor<2, dim>       &P,
-                Tensor<4, dim>       &A) const
+    evaluate_at(const Tensor<2, dim>          &F,
+                const ArrayView<const double> &committed_state,
+                const ArrayView<double>       &trial_state,
+                const double                   p,
+                Tensor<2, dim>                &P,
+                Tensor<4, dim>                *A) const
     {
-      if (with_isochoric)
-        split.evaluate_isochoric(F, P, A);
+      if (with_isochoric && n_material_state > 0)
+        split.evaluate_isochoric_with_state(F,
+                                            committed_state,
+                                            trial_state,
+                                            P,
+                                            A);
+      else if (with_isochoric && A != nullptr)
+        split.evaluate_isochoric(F, P, *A);
+      else if (with_isochoric)
+        P = split.isochoric_first_piola_stress(F);
       else
         {
           P = 0;
-          A = 0;
+          if (A != nullptr)
+            *A = 0;
         }
       P += p * split.volume_measure_derivative(F);
-      split.add_volume_measure_second_derivative(F, p, A);
+      if (A != nullptr)
+        split.add_volume_measure_second_derivative(F, p, *A);
     }
 
     const Materials::VolumetricSplit<dim> &split;
     const double                           pressure;
     const bool                             with_isochoric;
     const bool                             pressure_per_point;
+    const unsigned int                     n_material_state;
   };
 } // namespace pg
 

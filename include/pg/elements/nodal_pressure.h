@@ -82,6 +82,14 @@ namespace pg
    * the nodal values. Throws if theta(F_q) is undefined (J <= 0). Units:
    * force (u rows), volume (p and Theta rows); @p residual and @p tangent
    * (nullptr: residual only) are overwritten.
+   *
+   * A material with history: the isochoric part carries it
+   * (VolumetricSplit::evaluate_isochoric_with_state() at every point, from
+   * @p committed_state, writing @p trial_state: the family's slices of the
+   * material's state, n_state_variables() per point of @p table; empty:
+   * stateless); W_vol stays elastic. The bubble's local Newton iteration
+   * evaluates from the committed state and discards its trial states; the
+   * final assembly writes @p trial_state at the converged bubble.
    */
   template <int dim>
   void
@@ -94,7 +102,9 @@ namespace pg
     const bool                             bubble,
     Vector<double>                        &residual,
     FullMatrix<double>                    *tangent,
-    CondensedFieldIterate                 *iterate = nullptr);
+    CondensedFieldIterate                 *iterate         = nullptr,
+    const ArrayView<const double>         &committed_state = {},
+    const ArrayView<double>               &trial_state     = {});
 } // namespace pg
 
 #endif

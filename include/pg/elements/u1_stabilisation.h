@@ -37,7 +37,10 @@ namespace pg
    * pseudo-material on the Unl table @p unl_table (both tables of the same
    * family, nodes in the same order). The pseudo-material has the constants
    * of eq. (6.20). Residual and tangent as assemble_element(), which they
-   * combine; both are overwritten. Stateless materials only.
+   * combine; both are overwritten. The real material carries the
+   * history at the point of @p u1_table (@p committed_state,
+   * @p trial_state: its slices, n_state_variables() values; empty if
+   * stateless); the pseudo-material is elastic (stateless).
    */
   template <int dim>
   void
@@ -48,7 +51,9 @@ namespace pg
                            const Materials::Material<dim>    &pseudo_material,
                            Vector<double>                    &residual,
                            FullMatrix<double>                *tangent,
-                           U1SUnlScratch                     &scratch);
+                           U1SUnlScratch                     &scratch,
+                           const ArrayView<const double> &committed_state = {},
+                           const ArrayView<double>       &trial_state     = {});
 
   /**
    * The constant C = 18 alpha K / (pi delta^4) of Peridigm's hourglass

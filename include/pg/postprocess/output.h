@@ -3,6 +3,7 @@
 
 #include <pg/base/global.h>
 #include <pg/materials/material.h>
+#include <pg/postprocess/problem_view.h>
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/numerics/data_postprocessor.h>
@@ -29,25 +30,29 @@ namespace pg
    * or NaN in every entry where it is undefined (J <= 0: an inverted
    * element, or the correspondence F of a CPD particle, which is only a
    * visual aid): output shows the hole instead of stopping a run whose
-   * solution is already computed.
+   * solution is already computed. With a (committed) material @p state:
+   * Material::cauchy_stress_with_state(F, state).
    */
   template <int dim>
   Tensor<2, 3>
   cauchy_stress_or_nan(const Materials::Material<dim> &material,
-                       const Tensor<2, dim>           &F);
+                       const Tensor<2, dim>           &F,
+                       const ArrayView<const double>  &state = {});
 
   /**
    * The values belonging to stress_field_names() at @p F, with the
    * hydrostatic Cauchy stress @p pressure I added (IUnlP0, whose material is
    * the isochoric part and whose volumetric stress p J F^-T is p I in
-   * Cauchy's measure; the von Mises stress does not change).
+   * Cauchy's measure; the von Mises stress does not change), from the
+   * material's committed @p state where it has one.
    */
   template <int dim>
   void
   stress_field_values(const Materials::Material<dim> &material,
                       const Tensor<2, dim>           &F,
                       std::vector<double>            &values,
-                      const double                    pressure = 0.);
+                      const double                    pressure = 0.,
+                      const ArrayView<const double>  &state    = {});
 
   /**
    * DataPostprocessor for the cells: deformation gradient, Cauchy stress
@@ -78,6 +83,17 @@ namespace pg
     /** The Q1 gradient on every cell. */
     explicit StressPostprocessor(const Materials::Material<dim> &material);
 
+    /**
+     * A material with history: the stresses from its committed state
+     * @p states (kept by the caller): on an FE cell the state of the Gauss
+     * point at the corner of the vertex nearest the evaluation point (one
+     * point per cell: that one), on a meshfree cell that of the particle
+     * at that vertex, whose index is @p particle_at(v) (-1: none).
+     */
+    void
+    set_states(const Postprocess::CommittedStates     *states,
+               const std::function<int(unsigned int)> &particle_at);
+
     void
     evaluate_vector_field(
       const DataPostprocessorInputs::Vector<dim> &inputs,
@@ -98,6 +114,9 @@ namespace pg
      * stress (stress_field_values()); empty for the other formulations.
      */
     const std::function<double(unsigned int)> particle_pressure;
+    /** The committed states (set_states()), or nullptr. */
+    const Postprocess::CommittedStates *states = nullptr;
+    std::function<int(unsigned int)>    particle_at;
   };
 
   /**

@@ -9,6 +9,7 @@
 #include <pg/elements/family_elements.h>
 #include <pg/elements/quadrature_table.h>
 #include <pg/families/family_set.h>
+#include <pg/history/quadrature_point_history.h>
 #include <pg/materials/material.h>
 #include <pg/mesh/linear_cells.h>
 #include <pg/mesh/particle_set.h>
@@ -62,6 +63,43 @@ namespace pg
     exact_displacement_gradient(const Parameters::AllParameters<dim> &prm,
                                 const double      mesh_diameter,
                                 const Point<dim> &p);
+
+    /**
+     * The material's committed state for output, on every rank
+     * (ProblemView::committed_states()): per active cell of the mesh, the
+     * state of its Gauss points (FE cells; point q's n_material values at
+     * (cell * points_per_cell + q) * n_material of @p cells), and per
+     * particle the state at point 0 of its family (the master's point;
+     * n_material values at k * n_material of @p particles). Empty for a
+     * stateless material.
+     */
+    struct CommittedStates
+    {
+      unsigned int        n_material      = 0;
+      unsigned int        points_per_cell = 0;
+      std::vector<double> cells, particles;
+
+      /** The state of point @p q of active cell @p c. */
+      ArrayView<const double>
+      cell(const unsigned int c, const unsigned int q) const
+      {
+        if (n_material == 0)
+          return {};
+        const double *begin =
+          cells.data() + (c * points_per_cell + q) * n_material;
+        return make_array_view(begin, begin + n_material);
+      }
+
+      /** The state of particle @p k (its family's point 0). */
+      ArrayView<const double>
+      particle(const unsigned int k) const
+      {
+        if (n_material == 0)
+          return {};
+        const double *begin = particles.data() + k * n_material;
+        return make_array_view(begin, begin + n_material);
+      }
+    };
 
     /**
      * A read-only view of a set-up problem (as ASPECT's SimulatorAccess):
@@ -123,6 +161,13 @@ namespace pg
       const AffineConstraints<double> *constraints = nullptr;
       /** Unit-stress residual d^k of every particle (section 8.2). */
       const std::vector<Tensor<1, dim>> *unit_stress = nullptr;
+      /**
+       * The point history: group 0 the FE cells (elements in the order of
+       * owned_fe_cells), group 1 the families (in the order of
+       * owned_families); per point the material's n_state_variables()
+       * values first (doc/architecture.md, "History").
+       */
+      const QuadraturePointHistory *history = nullptr;
 
       /** The cell and reference coordinates of every 'Output/Points'. */
       const std::vector<std::pair<CellIterator, Point<dim>>> *point_locations =
@@ -181,6 +226,22 @@ namespace pg
        */
       std::vector<Tensor<2, dim>>
       particle_deformation_gradients() const;
+
+      /**
+       * The material's committed state of every FE cell's Gauss points and
+       * of every particle, on every rank (collective). Empty for a
+       * stateless material.
+       */
+      CommittedStates
+      committed_states() const;
+
+      /**
+       * The largest value of each of the material's state_output_names()
+       * over all committed points of all groups and ranks (collective);
+       * empty for a material without state outputs.
+       */
+      std::vector<double>
+      maximum_state_outputs() const;
 
       /**
        * The Q1 interpolant of the gathered displacement @p u_all at

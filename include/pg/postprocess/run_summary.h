@@ -144,6 +144,12 @@ namespace pg
      * over the elements at the last output (empty otherwise).
      */
     std::vector<double> condensed_pressure_range;
+    /**
+     * A material with state outputs (Material::state_output_names()): each
+     * name and its largest value over all committed points at the last
+     * output, written as "max_<name>" (e.g. max_equivalent_plastic_strain).
+     */
+    std::vector<std::pair<std::string, double>> state_output_maxima;
     /** Largest |d^k| at interior particles, divided by spacing^(dim-1). */
     double max_interior_unit_stress_residual = 0;
     /**

@@ -324,6 +324,13 @@ namespace pg
     std::vector<CellIterator>         owned_cells;
     std::unique_ptr<Q1CellGroup<dim>> amg_cells;
     std::unique_ptr<Assembler<dim>>   amg_assembler;
+    /**
+     * A material with history: the state of amg_cells' points, always the
+     * initial one (never committed): the AMG operator of a stateful
+     * material is that of its initial (virgin) state, a preconditioner
+     * only.
+     */
+    QuadraturePointHistory amg_history;
     /** Newmark's c0 M in the tangent (set_tangent_mass()), or nullptr. */
     const LinearAlgebra::SparseMatrix *tangent_mass        = nullptr;
     double                             tangent_mass_factor = 0;
