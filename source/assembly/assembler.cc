@@ -418,7 +418,11 @@ namespace pg
       matrix->compress(VectorOperation::add);
     rhs->compress(VectorOperation::add);
     force->compress(VectorOperation::add);
-    if (failure.empty() && !std::isfinite(rhs->l2_norm()))
+    // l2_norm() is collective: every rank computes it, also one whose
+    // elements failed (calling it only where failure is empty hung a step
+    // cut on 2 ranks when the elements failed on one of them)
+    const double rhs_norm = rhs->l2_norm();
+    if (failure.empty() && !std::isfinite(rhs_norm))
       failure = "NaN or inf in the assembled residual (none in the "
                 "elements' own contributions: check the constraints and "
                 "'Prescribed displacement').";
