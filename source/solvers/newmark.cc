@@ -132,6 +132,9 @@ namespace pg
       }
     v.compress(VectorOperation::insert);
     a.compress(VectorOperation::insert);
+    // nodes held on a rigid wall: at rest
+    system.hold_at_wall(v);
+    system.hold_at_wall(a);
     return true;
   }
 } // namespace pg

@@ -119,6 +119,16 @@ namespace pg
     /** Newton's operations on the static residual. */
     virtual NewtonSolver::Operations
     newton_operations() = 0;
+
+    /**
+     * Zero the entries of @p v (a velocity or acceleration) at the DoFs
+     * held on a rigid wall (none by default).
+     */
+    virtual void
+    hold_at_wall(LinearAlgebra::Vector &v) const
+    {
+      (void)v;
+    }
   };
 } // namespace pg
 

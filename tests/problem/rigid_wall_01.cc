@@ -1,0 +1,133 @@
+// 'Boundary conditions/Rigid wall' in quasi-static runs: the active set
+// inside the load steps. A block [0, 1]^2 (linear elastic, E = 1,
+// nu = 0.3) rests on the wall y = 0 (normal 0, 1), its top clamped in x
+// and moved by u_y = 0.04 t - 0.03: at t = 0.5 it is pressed 0.01 into the
+// wall, at t = 1 lifted 0.01 off it. With one load step to t = 0.5 the
+// free block first moves down rigidly, every bottom node lands behind the
+// wall, all are held and the step is solved again: the wall's reaction
+// must balance the top's to round-off (static equilibrium), every reaction
+// be compressive (nothing is released again) and no node lie behind the
+// wall. The second step (t = 1) starts with the bottom held: every node
+// pulls on the wall and is released, the block hangs free: no node held,
+// the wall's reaction zero and the bottom 0.01 above the wall. FEM Q1 and
+// VCBCPBG V5sn Unl.
+
+#include "../tests.h"
+#include "problem_fixture.h"
+
+#include <regex>
+
+namespace
+{
+  std::string
+  block(const std::string &formulation,
+        const unsigned int n,
+        const unsigned int load_steps,
+        const std::string &top)
+  {
+    return "set Dimension = 2\n"
+           "subsection Geometry\n"
+           "  set Lower corner = 0, 0\n"
+           "  set Upper corner = 1, 1\n"
+           "  set Subdivisions = " +
+           std::to_string(n) + ", " + std::to_string(n) +
+           "\nend\n"
+           "subsection Discretization\n"
+           "  set Formulation = " +
+           formulation +
+           "\nend\n"
+           "subsection Material\n"
+           "  set Model = linear elastic\n"
+           "  set Young's modulus = 1\n"
+           "  set Poisson's ratio = 0.3\n"
+           "end\n"
+           "subsection Boundary conditions\n"
+           "  set Dirichlet = 3: xy\n"
+           "  subsection Prescribed displacement\n"
+           "    set Function expression = 0; " +
+           top +
+           "\n  end\n"
+           "  subsection Rigid wall\n"
+           "    set Point  = 0.5, 0\n"
+           "    set Normal = 0, 2\n"
+           "  end\n"
+           "end\n"
+           "subsection Loading\n"
+           "  set Load steps = " +
+           std::to_string(load_steps) +
+           "\nend\n"
+           "subsection Linear solver\n"
+           "  set Type = direct\n"
+           "end\n"
+           "subsection Output\n"
+           "  set VTU = false\n"
+           "end\n";
+  }
+
+  /** The sum of the numbers after @p what in the lines of @p screen. */
+  unsigned int
+  count(const std::string &screen, const std::string &what)
+  {
+    unsigned int     n = 0;
+    const std::regex pattern("(\\d+) " + what);
+    for (auto it = std::sregex_iterator(screen.begin(), screen.end(), pattern);
+         it != std::sregex_iterator();
+         ++it)
+      n += std::stoi((*it)[1]);
+    return n;
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+
+  for (const auto &[formulation, n] :
+       std::vector<std::pair<std::string, unsigned int>>{{"FEM", 4},
+                                                         {"VCBCPBG V5sn Unl",
+                                                          6}})
+    {
+      deallog << formulation << ", " << n << " x " << n << " cells"
+              << std::endl;
+      // pressed: one load step to u_y = -0.01
+      std::ostringstream   screen;
+      const pg::RunSummary pressed =
+        run_problem<2>(block(formulation, n, 1, "-0.01*t"), screen);
+      const std::vector<double> &top  = pressed.reactions.at(3);
+      const std::vector<double> &wall = pressed.wall_reaction;
+      deallog << "  pressed: nodes held " << pressed.wall_active_nodes
+              << " (bottom nodes " << n + 1 << "), brought into contact "
+              << count(screen.str(), "nodes in contact") << ", released "
+              << count(screen.str(), "released") << std::endl;
+      print_rounded("  pressed: wall reaction y", wall[1], 3);
+      print_bound("  pressed: |R_wall + R_top| / |R_top|",
+                  std::hypot(wall[0] + top[0], wall[1] + top[1]) /
+                    std::abs(top[1]),
+                  1e-10);
+      print_bound("  pressed: wall reaction x (frictionless)", wall[0], 1e-12);
+      deallog << "  pressed: min n . (x - p) >= -1e-12: "
+              << (pressed.wall_min_gap >= -1e-12 ? "yes" : "NO") << std::endl;
+
+      // pressed at t = 0.5, lifted at t = 1
+      std::ostringstream   screen2;
+      const pg::RunSummary lifted =
+        run_problem<2>(block(formulation, n, 2, "0.04*t - 0.03"), screen2);
+      deallog << "  lifted: nodes held " << lifted.wall_active_nodes
+              << ", brought into contact "
+              << count(screen2.str(), "nodes in contact") << ", released "
+              << count(screen2.str(), "released") << std::endl;
+      print_bound("  lifted: |wall reaction|",
+                  std::hypot(lifted.wall_reaction[0], lifted.wall_reaction[1]),
+                  1e-12);
+      print_bound("  lifted: |top reaction|",
+                  std::hypot(lifted.reactions.at(3)[0],
+                             lifted.reactions.at(3)[1]),
+                  1e-10);
+      print_bound("  lifted: min gap - 0.01",
+                  lifted.wall_min_gap - 0.01,
+                  1e-12);
+    }
+}

@@ -1,0 +1,101 @@
+// 'Boundary conditions/Rigid wall' in explicit runs (leapfrog): a node
+// that the predictor puts behind the wall is projected onto it and held at
+// rest; it is released when its reaction turns tensile. The block of
+// rigid_wall_01 (E = 1, nu = 0.3, rho = 1, wave transit time ~ 1) rests
+// on the wall y = 0; its clamped top moves slowly by u_y = -0.01 sin(2 pi
+// t / 40): pressed to -0.01 at t = 10, back at 0 at t = 20, lifted to
+// +0.01 at t = 30. Run to t = 10: every bottom node held, no node behind
+// the wall, and the wall's reaction balances the top's up to the inertia
+// of the slow loading (a few per cent). Run to t = 30: every node
+// released, the wall's reaction zero, the bottom above the wall. FEM Q1
+// and VCBCPBG V5sn Unl.
+
+#include "../tests.h"
+#include "problem_fixture.h"
+
+namespace
+{
+  std::string
+  block(const std::string &formulation,
+        const unsigned int n,
+        const double       end_time)
+  {
+    std::ostringstream s;
+    s << "set Dimension = 2\n"
+      << "subsection Geometry\n"
+      << "  set Lower corner = 0, 0\n"
+      << "  set Upper corner = 1, 1\n"
+      << "  set Subdivisions = " << n << ", " << n << "\nend\n"
+      << "subsection Discretization\n"
+      << "  set Formulation = " << formulation << "\nend\n"
+      << "subsection Material\n"
+      << "  set Model = linear elastic\n"
+      << "  set Young's modulus = 1\n"
+      << "  set Poisson's ratio = 0.3\n"
+      << "  set Density = 1\n"
+      << "end\n"
+      << "subsection Boundary conditions\n"
+      << "  set Dirichlet = 3: xy\n"
+      << "  subsection Prescribed displacement\n"
+      << "    set Function expression = 0; -0.01*sin(2*pi*t/40)\n"
+      << "  end\n"
+      << "  subsection Rigid wall\n"
+      << "    set Normal = 0, 1\n"
+      << "  end\n"
+      << "end\n"
+      << "subsection Time\n"
+      << "  set Integrator = leapfrog\n"
+      << "  set End time = " << end_time << "\n"
+      << "  set Output interval = " << end_time << "\n"
+      << "end\n"
+      << "subsection Output\n"
+      << "  set VTU = false\n"
+      << "end\n";
+    return s.str();
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog();
+
+  for (const auto &[formulation, n] :
+       std::vector<std::pair<std::string, unsigned int>>{{"FEM", 4},
+                                                         {"VCBCPBG V5sn Unl",
+                                                          6}})
+    {
+      deallog << formulation << ", " << n << " x " << n << " cells"
+              << std::endl;
+      std::ostringstream   screen;
+      const pg::RunSummary pressed =
+        run_problem<2>(block(formulation, n, 10), screen);
+      const std::vector<double> &top  = pressed.reactions.at(3);
+      const std::vector<double> &wall = pressed.wall_reaction;
+      deallog << "  t = 10: nodes held " << pressed.wall_active_nodes
+              << " (bottom nodes " << n + 1 << ")" << std::endl;
+      print_rounded("  t = 10: wall reaction y", wall[1], 2);
+      print_bound("  t = 10: |R_wall + R_top| / |R_top|",
+                  std::hypot(wall[0] + top[0], wall[1] + top[1]) /
+                    std::abs(top[1]),
+                  0.05);
+      print_bound("  t = 10: wall reaction x (frictionless)", wall[0], 1e-12);
+      deallog << "  t = 10: min n . (x - p) >= -1e-12: "
+              << (pressed.wall_min_gap >= -1e-12 ? "yes" : "NO") << std::endl;
+
+      const pg::RunSummary lifted =
+        run_problem<2>(block(formulation, n, 30), screen);
+      deallog << "  t = 30: nodes held " << lifted.wall_active_nodes
+              << std::endl;
+      print_bound("  t = 30: |wall reaction|",
+                  std::hypot(lifted.wall_reaction[0], lifted.wall_reaction[1]),
+                  1e-12);
+      deallog << "  t = 30: min gap in (0.005, 0.015): "
+              << (lifted.wall_min_gap > 0.005 && lifted.wall_min_gap < 0.015 ?
+                    "yes" :
+                    "NO")
+              << std::endl;
+    }
+}
