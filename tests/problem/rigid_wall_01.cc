@@ -10,7 +10,9 @@
 // wall. The second step (t = 1) starts with the bottom held: every node
 // pulls on the wall and is released, the block hangs free: no node held,
 // the wall's reaction zero and the bottom 0.01 above the wall. FEM Q1 and
-// VCBCPBG V5sn Unl.
+// VCBCPBG V5sn Unl. With 'Contact = two-sided' (FEM) the lifted block stays
+// held: the wall pulls, its reaction balances the top's. (The wall's point
+// is (0.5, 0) and its normal (0, 2): any point of the plane, normalised.)
 
 #include "../tests.h"
 #include "problem_fixture.h"
@@ -23,7 +25,8 @@ namespace
   block(const std::string &formulation,
         const unsigned int n,
         const unsigned int load_steps,
-        const std::string &top)
+        const std::string &top,
+        const std::string &contact = "unilateral")
   {
     return "set Dimension = 2\n"
            "subsection Geometry\n"
@@ -50,6 +53,9 @@ namespace
            "  subsection Rigid wall\n"
            "    set Point  = 0.5, 0\n"
            "    set Normal = 0, 2\n"
+           "    set Contact = " +
+           contact +
+           "\n"
            "  end\n"
            "end\n"
            "subsection Loading\n"
@@ -129,5 +135,27 @@ main(int argc, char **argv)
       print_bound("  lifted: min gap - 0.01",
                   lifted.wall_min_gap - 0.01,
                   1e-12);
+      // 'Contact = two-sided' (the source's implicit runs): held once
+      // touched, so the lifted block hangs on the wall, whose (tensile)
+      // reaction balances the top's.
+      if (formulation == "FEM")
+        {
+          const pg::RunSummary glued = run_problem<2>(
+            block(formulation, n, 2, "0.04*t - 0.03", "two-sided"),
+            screen);
+          deallog << "  two-sided, lifted: nodes held "
+                  << glued.wall_active_nodes << std::endl;
+          print_rounded("  two-sided, lifted: wall reaction y",
+                        glued.wall_reaction[1],
+                        3);
+          print_bound("  two-sided, lifted: |R_wall + R_top| / |R_top|",
+                      std::abs(glued.wall_reaction[1] +
+                               glued.reactions.at(3)[1]) /
+                        std::abs(glued.reactions.at(3)[1]),
+                      1e-10);
+          print_bound("  two-sided, lifted: min gap",
+                      glued.wall_min_gap,
+                      1e-12);
+        }
     }
 }
