@@ -154,11 +154,13 @@ namespace pg
             "(f_int - f_ext) at the node, turns tensile (< 0). Quasi-static "
             "runs update this active set after each converged Newton solve "
             "and solve the load step again until it no longer changes (at "
-            "most 'Maximum active set changes' times); explicit and Newmark "
-            "runs update it once per time step, after the predictor (nodes "
-            "that the predictor puts behind the wall are projected onto it "
-            "and held with zero normal velocity, nodes with a tensile "
-            "reaction in the last step are released). Dirichlet and "
+            "most 'Maximum active set changes' times); Newmark runs do the "
+            "same in every time step, with the reactions f_int - f_ext + M "
+            "a. Explicit (leapfrog) runs update it once per time step, after "
+            "the predictor (the dissertation's method): nodes that the "
+            "predictor puts behind the wall are projected onto it and held "
+            "at rest, nodes with a tensile reaction in the last step are "
+            "released. Dirichlet and "
             "symmetry conditions on the same component win. The sum of the "
             "contact forces is printed and written to summary.json "
             "('wall_reaction', with 'wall_active_nodes' and 'wall_min_gap' = "
@@ -182,8 +184,9 @@ namespace pg
             "Maximum active set changes",
             "20",
             Patterns::Integer(1),
-            "Quasi-static runs: how many times one load step is solved "
-            "again because nodes came into contact or were released; after "
+            "Quasi-static and Newmark runs: how many times one load or time "
+            "step is solved again because nodes came into contact or were "
+            "released; after "
             "that the step counts as not converged (and is cut like a "
             "Newton failure).");
         }

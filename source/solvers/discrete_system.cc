@@ -347,16 +347,46 @@ namespace pg
 
   template <int dim>
   std::pair<unsigned int, unsigned int>
-  DiscreteSystem<dim>::update_rigid_wall(const bool release)
+  DiscreteSystem<dim>::update_rigid_wall(const LinearAlgebra::Vector &reaction,
+                                         const bool                   release)
   {
     const std::pair<unsigned int, unsigned int> changes =
-      rigid_wall->update(solution, force, wall_free_constraints, release);
+      rigid_wall->update(solution, reaction, wall_free_constraints, release);
     if (changes.first + changes.second > 0)
       {
         make_constraints(constraints, false);
         make_constraints(zero_constraints, true);
       }
     return changes;
+  }
+
+
+
+  template <int dim>
+  int
+  DiscreteSystem<dim>::update_contact(const LinearAlgebra::Vector &reaction,
+                                      const unsigned int           round)
+  {
+    if (!rigid_wall)
+      return 0;
+    const auto [added, released] = update_rigid_wall(reaction, true);
+    if (added + released == 0)
+      return 0;
+    pcout << "    rigid wall: " << added << " nodes in contact, " << released
+          << " released (" << rigid_wall->n_active()
+          << " held); solving the step again" << std::endl;
+    if (round + 1 >= prm.boundary_conditions.rigid_wall.maximum_set_changes)
+      {
+        pcout << "    the active set of the rigid wall still changed after "
+              << round + 1
+              << " solves ('Boundary conditions/Rigid wall/Maximum active "
+                 "set changes')"
+              << std::endl;
+        return -1;
+      }
+    constraints.distribute(solution_owned);
+    displacement_changed();
+    return 1;
   }
 
 
@@ -556,7 +586,7 @@ namespace pg
         summary.newton_residuals.push_back(result.residuals);
         if (!rigid_wall)
           return true;
-        const auto [added, released] = update_rigid_wall(true);
+        const auto [added, released] = update_rigid_wall(force, true);
         if (added + released == 0)
           return true;
         pcout << "    rigid wall: " << added << " nodes in contact, "

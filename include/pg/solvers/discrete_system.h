@@ -170,10 +170,12 @@ namespace pg
     {
       // dynamics: the rigid wall's active set once per step, at the
       // predicted displacement and the forces of the last step
+      // (Newmark: nodes are released after the solve, update_contact(),
+      // where the reactions include the inertia)
       if (rigid_wall)
         {
           update_ghost_values();
-          update_rigid_wall(true);
+          update_rigid_wall(force, prm.time.integrator == "leapfrog");
         }
       constraints.distribute(solution_owned);
     }
@@ -187,12 +189,18 @@ namespace pg
 
     /**
      * Update the active set of the rigid wall (RigidWall::update()) at
-     * the current displacement and force, releasing tensile nodes if
+     * the current displacement and the nodal reactions @p reaction (f_int
+     * - f_ext, or with Newmark's inertia), releasing tensile nodes if
      * @p release, and rebuild both constraints if it changed. Returns the
      * numbers of nodes activated and released.
      */
     std::pair<unsigned int, unsigned int>
-    update_rigid_wall(const bool release);
+    update_rigid_wall(const LinearAlgebra::Vector &reaction,
+                      const bool                   release);
+
+    int
+    update_contact(const LinearAlgebra::Vector &reaction,
+                   const unsigned int           round) override;
 
     const AffineConstraints<double> &
     homogeneous_constraints() const override

@@ -129,6 +129,23 @@ namespace pg
     {
       (void)v;
     }
+
+    /**
+     * After the converged Newton solve number @p round (0, 1, ...) of an
+     * implicit time step: update the active set of a rigid wall with the
+     * nodal reactions @p reaction (f_int - f_ext + M a) and, if it
+     * changed, impose the new constraints on displacement(). Returns 0 if
+     * the set stayed (none by default), 1 if it changed and the step is to
+     * be solved again, -1 if it changed too often (the step fails).
+     */
+    virtual int
+    update_contact(const LinearAlgebra::Vector &reaction,
+                   const unsigned int           round)
+    {
+      (void)reaction;
+      (void)round;
+      return 0;
+    }
   };
 } // namespace pg
 
