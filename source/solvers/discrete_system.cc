@@ -653,6 +653,15 @@ namespace pg
   {
     Timer timer;
     update = 0;
+    // Newmark adds c0 M, condensed for the constraints of the start, to
+    // the tangent: the rows of the DoFs held on a rigid wall since then
+    // would couple them (an inexact Newton direction, 9 instead of 1
+    // iterations per step on a linear block). Their rows become those of
+    // a constraint again (diagonal kept, right-hand side 0: du = 0 there).
+    if (rigid_wall && tangent_mass != nullptr)
+      for (const auto &[dof, value] : rigid_wall->values(true))
+        if (discretization.owned_dofs.is_element(dof))
+          matrix.clear_row(dof, matrix.diag_element(dof));
     try
       {
         std::function<const LinearAlgebra::SparseMatrix *()> amg_operator;
