@@ -70,7 +70,10 @@ namespace
            "end\n";
   }
 
-  /** The sum of the numbers after @p what in the lines of @p screen. */
+  /**
+   * The sum of the numbers before @p what in the lines of @p screen
+   * (collective).
+   */
   unsigned int
   count(const std::string &screen, const std::string &what)
   {
@@ -80,7 +83,8 @@ namespace
          it != std::sregex_iterator();
          ++it)
       n += std::stoi((*it)[1]);
-    return n;
+    // (the screen is rank 0's)
+    return Utilities::MPI::max(n, MPI_COMM_WORLD);
   }
 } // namespace
 
