@@ -16,7 +16,8 @@ namespace pg
     const IndexSet                                  &relevant_dofs,
     const IndexSet                                  &owned_dofs,
     const double                                     mesh_diameter,
-    const MPI_Comm                                   comm)
+    const MPI_Comm                                   comm,
+    const bool                                       hold_touching)
     : component(0)
     , sign(1.)
     , unilateral(parameters.unilateral)
@@ -62,9 +63,13 @@ namespace pg
                     "body)."));
             }
           if (relevant_dofs.is_element(dof))
-            nodes.push_back({X, dof, owned_dofs.is_element(dof)});
+            {
+              nodes.push_back({X, dof, owned_dofs.is_element(dof)});
+              active.push_back(hold_touching &&
+                               sign * (X[component] - point[component]) <=
+                                 1e-10 * mesh_diameter);
+            }
         }
-    active.assign(nodes.size(), false);
   }
 
 

@@ -112,7 +112,8 @@ namespace pg
                                          discretization.relevant_dofs,
                                          discretization.owned_dofs,
                                          discretization.mesh_diameter,
-                                         comm);
+                                         comm,
+                                         !prm.time.dynamic());
     make_constraints(constraints, false);
     make_constraints(zero_constraints, true);
     // A quasi-static problem needs supports against every rigid motion of

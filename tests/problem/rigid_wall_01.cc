@@ -1,18 +1,22 @@
 // 'Boundary conditions/Rigid wall' in quasi-static runs: the active set
 // inside the load steps. A block [0, 1]^2 (linear elastic, E = 1,
-// nu = 0.3) rests on the wall y = 0 (normal 0, 1), its top clamped in x
-// and moved by u_y = 0.04 t - 0.03: at t = 0.5 it is pressed 0.01 into the
-// wall, at t = 1 lifted 0.01 off it. With one load step to t = 0.5 the
-// free block first moves down rigidly, every bottom node lands behind the
-// wall, all are held and the step is solved again: the wall's reaction
-// must balance the top's to round-off (static equilibrium), every reaction
-// be compressive (nothing is released again) and no node lie behind the
-// wall. The second step (t = 1) starts with the bottom held: every node
-// pulls on the wall and is released, the block hangs free: no node held,
-// the wall's reaction zero and the bottom 0.01 above the wall. FEM Q1 and
-// VCBCPBG V5sn Unl. With 'Contact = two-sided' (FEM) the lifted block stays
-// held: the wall pulls, its reaction balances the top's. (The wall's point
-// is (0.5, 0) and its normal (0, 2): any point of the plane, normalised.)
+// nu = 0.3) lies 0.005 above the wall y = -0.005 (normal 0, 1), its top
+// clamped in x and moved by u_y = 0.04 t - 0.03: at t = 0.5 it is pressed
+// 0.005 into the wall, at t = 1 lifted 0.015 above it. With one load step
+// to t = 0.5 the free block first moves down rigidly, every bottom node
+// lands behind the wall, all are held and the step is solved again: the
+// wall's reaction must balance the top's to round-off (static
+// equilibrium), every reaction be compressive (nothing is released again)
+// and no node lie behind the wall. The second step (t = 1) starts with
+// the bottom held: every node pulls on the wall and is released, the block
+// hangs free: no node held, the wall's reaction zero and the bottom 0.015
+// above the wall. With 'Contact = two-sided' (FEM) the lifted block stays
+// held: the wall pulls, its reaction balances the top's. Then a block
+// standing on the wall y = 0 and pressed by the traction T_y = -0.01 on
+// its top, held in x at one corner only: the nodes that touch the wall at
+// the start are held (static runs), which supports the block; the wall's
+// reaction is the load, 0.01, to round-off. FEM Q1 and VCBCPBG V5sn Unl.
+// (The wall's point is any point of the plane; the normal is normalised.)
 
 #include "../tests.h"
 #include "problem_fixture.h"
@@ -44,14 +48,21 @@ namespace
            "  set Young's modulus = 1\n"
            "  set Poisson's ratio = 0.3\n"
            "end\n"
-           "subsection Boundary conditions\n"
-           "  set Dirichlet = 3: xy\n"
-           "  subsection Prescribed displacement\n"
-           "    set Function expression = 0; " +
-           top +
-           "\n  end\n"
-           "  subsection Rigid wall\n"
-           "    set Point  = 0.5, 0\n"
+           "subsection Boundary conditions\n" +
+           (top.empty() ? std::string("  set Neumann = 3\n"
+                                      "  set Fixed points = 0, 0: x\n"
+                                      "  subsection Traction\n"
+                                      "    set Function expression = 0; -0.01\n"
+                                      "  end\n"
+                                      "  subsection Rigid wall\n"
+                                      "    set Point  = 0.5, 0\n") :
+                          "  set Dirichlet = 3: xy\n"
+                          "  subsection Prescribed displacement\n"
+                          "    set Function expression = 0; " +
+                            top +
+                            "\n  end\n"
+                            "  subsection Rigid wall\n"
+                            "    set Point  = 0.5, -0.005\n") +
            "    set Normal = 0, 2\n"
            "    set Contact = " +
            contact +
@@ -136,8 +147,8 @@ main(int argc, char **argv)
                   std::hypot(lifted.reactions.at(3)[0],
                              lifted.reactions.at(3)[1]),
                   1e-10);
-      print_bound("  lifted: min gap - 0.01",
-                  lifted.wall_min_gap - 0.01,
+      print_bound("  lifted: min gap - 0.015",
+                  lifted.wall_min_gap - 0.015,
                   1e-12);
       // 'Contact = two-sided' (the source's implicit runs): held once
       // touched, so the lifted block hangs on the wall, whose (tensile)
@@ -161,5 +172,18 @@ main(int argc, char **argv)
                       glued.wall_min_gap,
                       1e-12);
         }
+
+      // standing on the wall, pressed by a traction alone
+      const pg::RunSummary standing =
+        run_problem<2>(block(formulation, n, 1, ""), screen);
+      deallog << "  traction: nodes held " << standing.wall_active_nodes
+              << std::endl;
+      print_bound("  traction: |R_wall - (0, 0.01)| / 0.01",
+                  std::hypot(standing.wall_reaction[0],
+                             standing.wall_reaction[1] - 0.01) /
+                    0.01,
+                  1e-10);
+      deallog << "  traction: min n . (x - p) >= -1e-12: "
+              << (standing.wall_min_gap >= -1e-12 ? "yes" : "NO") << std::endl;
     }
 }

@@ -44,14 +44,18 @@ namespace pg
      * @p dof_handler whose DoFs are in @p relevant_dofs. Throws
      * ExcBadParameter for 'Boundary conditions/Rigid wall/Point', naming
      * the vertex and its position, if a vertex lies behind the plane by
-     * more than 1e-10 @p mesh_diameter.
+     * more than 1e-10 @p mesh_diameter. With @p hold_touching the
+     * vertices that touch the plane (within that distance) start held:
+     * quasi-static runs, where a body pressed onto the wall by a load
+     * alone needs this support in its first solve.
      */
     RigidWall(const Parameters::BoundaryConditions::RigidWall &parameters,
               const DoFHandler<dim>                           &dof_handler,
               const IndexSet                                  &relevant_dofs,
               const IndexSet                                  &owned_dofs,
               const double                                     mesh_diameter,
-              const MPI_Comm                                   comm);
+              const MPI_Comm                                   comm,
+              const bool hold_touching = false);
 
     /**
      * The prescribed values of the held DoFs: p_c - X_c, or zero if
