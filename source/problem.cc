@@ -333,6 +333,7 @@ namespace pg
     v.line_locations         = &line_locations;
     v.mesh_diameter          = &discretization.mesh_diameter;
     v.node_sets              = &discretization.node_sets;
+    v.rigid_wall             = system.rigid_wall.get();
     v.time_mesh              = &discretization.time_mesh;
     v.time_setup             = &discretization.time_setup;
     v.time_shape             = &discretization.time_shape;

@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace pg
@@ -133,6 +134,65 @@ namespace pg
           "force, and equals P . d^k (eq. 4.32 with the full tensor) for a "
           "constant stress. The quadratic patch test needs it for a linear "
           "stress.");
+        prm.enter_subsection("Rigid wall");
+        {
+          prm.declare_entry(
+            "Normal",
+            "",
+            Patterns::Anything(),
+            "Unit normal of a rigid, frictionless wall (plane), dim "
+            "comma-separated components, pointing from the wall into the "
+            "body's side, e.g. '0, 1' for a floor under the body. Empty: no "
+            "wall. A non-unit vector is normalised. Walls must be normal to "
+            "a coordinate axis ('0, 1', '-1, 0', '0, 0, 1', ...): the "
+            "constraint of a held node is then a plain prescribed value of "
+            "one displacement component. A node (mesh vertex, particle) "
+            "whose position x = X + u would cross the plane, n . (x - p) < "
+            "0, is held on it (its normal displacement is prescribed so that "
+            "n . (x - p) = 0; tangential motion stays free); with 'Contact = "
+            "unilateral' it is released when its reaction, the component n . "
+            "(f_int - f_ext) at the node, turns tensile (< 0). Quasi-static "
+            "runs start with the nodes that touch the wall held (so that a "
+            "body pressed onto it by a load alone is supported), update "
+            "this active set after each converged Newton solve "
+            "and solve the load step again until it no longer changes (at "
+            "most 'Maximum active set changes' times); Newmark runs do the "
+            "same in every time step, with the reactions f_int - f_ext + M "
+            "a. Explicit (leapfrog) runs update it once per time step, after "
+            "the predictor (the dissertation's method): nodes that the "
+            "predictor puts behind the wall are projected onto it and held "
+            "at rest, nodes with a tensile reaction in the last step are "
+            "released. Dirichlet and "
+            "symmetry conditions on the same component win. The sum of the "
+            "contact forces is printed and written to summary.json "
+            "('wall_reaction', with 'wall_active_nodes' and 'wall_min_gap' = "
+            "min n . (x - p) over all nodes).");
+          prm.declare_entry("Point",
+                            "",
+                            Patterns::Anything(),
+                            "A point of the wall plane, dim comma-separated "
+                            "coordinates (mesh length units). Empty: the "
+                            "origin. No node may lie behind the plane at "
+                            "the start (n . (X - p) < 0).");
+          prm.declare_entry(
+            "Contact",
+            "unilateral",
+            Patterns::Selection("unilateral|two-sided"),
+            "unilateral: a held node is released when its reaction turns "
+            "tensile (no penetration, no adhesion). two-sided: a node is "
+            "held once it has touched the wall and never released (the "
+            "dissertation's implicit runs).");
+          prm.declare_entry(
+            "Maximum active set changes",
+            "20",
+            Patterns::Integer(1),
+            "Quasi-static and Newmark runs: how many times one load or time "
+            "step is solved again because nodes came into contact or were "
+            "released; after "
+            "that the step counts as not converged (and is cut like a "
+            "Newton failure).");
+        }
+        prm.leave_subsection();
       }
       prm.leave_subsection();
     }
@@ -263,6 +323,60 @@ namespace pg
                                         " is also in 'Neumann'; give each "
                                         "loaded boundary one traction."));
         particle_traction_area = prm.get("Particle traction area");
+        prm.enter_subsection("Rigid wall");
+        {
+          const std::string normal_entry =
+            "Boundary conditions/Rigid wall/Normal";
+          const std::string normal_text = prm.get("Normal");
+          rigid_wall                    = RigidWall();
+          rigid_wall.enabled            = !Utilities::trim(normal_text).empty();
+          if (rigid_wall.enabled)
+            {
+              rigid_wall.normal = parse_coordinates(normal_text,
+                                                    dim,
+                                                    normal_entry,
+                                                    normal_text,
+                                                    "the normal");
+              double length     = 0;
+              for (const double x : rigid_wall.normal)
+                length += x * x;
+              length = std::sqrt(length);
+              AssertThrow(length > 0 && std::isfinite(length),
+                          ExcBadParameter(normal_entry,
+                                          normal_text,
+                                          "the wall normal must be a "
+                                          "non-zero vector, e.g. '0, 1' "
+                                          "for a floor under the body."));
+              unsigned int n_nonzero = 0;
+              for (double &x : rigid_wall.normal)
+                {
+                  x /= length;
+                  n_nonzero += (std::abs(x) > 1e-12);
+                }
+              AssertThrow(
+                n_nonzero == 1,
+                ExcBadParameter(normal_entry,
+                                normal_text,
+                                "walls must be normal to a coordinate axis "
+                                "(e.g. '0, 1' or '-1, 0'): a held node's "
+                                "constraint is a prescribed value of one "
+                                "displacement component. Rotate the mesh so "
+                                "that the wall is normal to an axis."));
+              const std::string point_text = prm.get("Point");
+              rigid_wall.point =
+                Utilities::trim(point_text).empty() ?
+                  std::vector<double>(dim, 0.) :
+                  parse_coordinates(point_text,
+                                    dim,
+                                    "Boundary conditions/Rigid wall/Point",
+                                    point_text,
+                                    "the point");
+            }
+          rigid_wall.unilateral = (prm.get("Contact") == "unilateral");
+          rigid_wall.maximum_set_changes =
+            prm.get_integer("Maximum active set changes");
+        }
+        prm.leave_subsection();
       }
       prm.leave_subsection();
     }

@@ -101,9 +101,11 @@ namespace pg
 
   template <int dim>
   void
-  BoundaryConstraints<dim>::make(const IndexSet            &relevant_dofs,
-                                 const bool                 homogeneous,
-                                 AffineConstraints<double> &c) const
+  BoundaryConstraints<dim>::make(
+    const IndexSet                                  &relevant_dofs,
+    const bool                                       homogeneous,
+    AffineConstraints<double>                       &c,
+    const std::map<types::global_dof_index, double> &extra_values) const
   {
     const auto &triangulation = dof_handler.get_triangulation();
     // Built from all cells on every rank (parallel::shared::Triangulation
@@ -301,6 +303,14 @@ namespace pg
                                   -normal[comp] / normal[pivot]);
                 }
       }
+    // the rigid wall's held DoFs, where no other condition holds them
+    for (const auto &[dof, value] : extra_values)
+      if (relevant_dofs.is_element(dof) && !c.is_constrained(dof))
+        {
+          c.add_line(dof);
+          if (!homogeneous)
+            c.set_inhomogeneity(dof, value);
+        }
     c.close();
   }
 

@@ -410,6 +410,10 @@ namespace pg
           out << (b > 0 ? ", " : "") << json_list(s.box_reactions[b]);
         out << "],\n";
       }
+    if (!s.wall_reaction.empty())
+      out << "  \"wall_reaction\": " << json_list(s.wall_reaction)
+          << ",\n  \"wall_active_nodes\": " << s.wall_active_nodes
+          << ",\n  \"wall_min_gap\": " << json_number(s.wall_min_gap) << ",\n";
     if (!s.node_set_reactions.empty())
       {
         out << "  \"node_set_reactions\": {";

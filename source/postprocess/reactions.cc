@@ -101,6 +101,16 @@ namespace pg
               summary.node_set_reactions[name] = reaction;
             }
         }
+      // The rigid wall: the sum of the contact forces of the held nodes.
+      summary.wall_reaction.clear();
+      if (view.rigid_wall != nullptr)
+        {
+          const Tensor<1, dim> r = view.rigid_wall->reaction(force);
+          for (unsigned int d = 0; d < dim; ++d)
+            summary.wall_reaction.push_back(r[d]);
+          summary.wall_active_nodes = view.rigid_wall->n_active();
+          summary.wall_min_gap      = view.rigid_wall->min_gap(*view.u);
+        }
     }
 
 
@@ -126,6 +136,14 @@ namespace pg
           for (const double v : summary.box_reactions[b])
             pcout << " " << (std::abs(v) < 1e-9 ? 0. : v);
           pcout << std::endl;
+        }
+      if (!summary.wall_reaction.empty())
+        {
+          pcout << "  reaction of the rigid wall:";
+          for (const double v : summary.wall_reaction)
+            pcout << " " << (std::abs(v) < 1e-9 ? 0. : v);
+          pcout << " (" << summary.wall_active_nodes << " nodes held, min gap "
+                << summary.wall_min_gap << ")" << std::endl;
         }
       for (const auto &[name, r] : summary.node_set_reactions)
         {

@@ -103,6 +103,17 @@ namespace pg
 
     SupportCheck::check_boundary_ids(prm.boundary_conditions,
                                      discretization.triangulation);
+    rigid_wall.reset();
+    make_constraints(wall_free_constraints, true);
+    if (prm.boundary_conditions.rigid_wall.enabled)
+      rigid_wall =
+        std::make_unique<RigidWall<dim>>(prm.boundary_conditions.rigid_wall,
+                                         discretization.dof_handler,
+                                         discretization.relevant_dofs,
+                                         discretization.owned_dofs,
+                                         discretization.mesh_diameter,
+                                         comm,
+                                         !prm.time.dynamic());
     make_constraints(constraints, false);
     make_constraints(zero_constraints, true);
     // A quasi-static problem needs supports against every rigid motion of
@@ -343,7 +354,57 @@ namespace pg
                              prm.prescribed_displacement,
                              discretization.mesh_diameter,
                              discretization.node_sets)
-      .make(discretization.relevant_dofs, homogeneous, c);
+      .make(discretization.relevant_dofs,
+            homogeneous,
+            c,
+            rigid_wall ? rigid_wall->values(homogeneous) :
+                         std::map<types::global_dof_index, double>());
+  }
+
+
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  DiscreteSystem<dim>::update_rigid_wall(const LinearAlgebra::Vector &reaction,
+                                         const bool                   release)
+  {
+    const std::pair<unsigned int, unsigned int> changes =
+      rigid_wall->update(solution, reaction, wall_free_constraints, release);
+    if (changes.first + changes.second > 0)
+      {
+        make_constraints(constraints, false);
+        make_constraints(zero_constraints, true);
+      }
+    return changes;
+  }
+
+
+
+  template <int dim>
+  int
+  DiscreteSystem<dim>::update_contact(const LinearAlgebra::Vector &reaction,
+                                      const unsigned int           round)
+  {
+    if (!rigid_wall)
+      return 0;
+    const auto [added, released] = update_rigid_wall(reaction, true);
+    if (added + released == 0)
+      return 0;
+    pcout << "    rigid wall: " << added << " nodes in contact, " << released
+          << " released (" << rigid_wall->n_active()
+          << " held); solving the step again" << std::endl;
+    if (round + 1 >= prm.boundary_conditions.rigid_wall.maximum_set_changes)
+      {
+        pcout << "    the active set of the rigid wall still changed after "
+              << round + 1
+              << " solves ('Boundary conditions/Rigid wall/Maximum active "
+                 "set changes')"
+              << std::endl;
+        return -1;
+      }
+    constraints.distribute(solution_owned);
+    displacement_changed();
+    return 1;
   }
 
 
@@ -525,15 +586,43 @@ namespace pg
     constraints.distribute(solution_owned);
     update_ghost_values();
 
-    const NewtonSolver::Result result =
-      NewtonSolver(prm.newton).solve(newton_operations());
-    summary.newton_residuals_last_step = result.residuals;
-    iterations                         = result.updates;
-    last_failure                       = result.failure;
-    NewtonSolver::report(result, pcout);
-    if (result.converged())
-      summary.newton_residuals.push_back(result.residuals);
-    return result.converged();
+    iterations = 0;
+    // The rigid wall's active set: after each converged Newton solve,
+    // nodes behind the wall are put on it and nodes with a tensile
+    // reaction released, and the step is solved again until the set
+    // stays (at most 'Maximum active set changes' times).
+    for (unsigned int round = 0;; ++round)
+      {
+        const NewtonSolver::Result result =
+          NewtonSolver(prm.newton).solve(newton_operations());
+        summary.newton_residuals_last_step = result.residuals;
+        iterations += result.updates;
+        last_failure = result.failure;
+        NewtonSolver::report(result, pcout);
+        if (!result.converged())
+          return false;
+        summary.newton_residuals.push_back(result.residuals);
+        if (!rigid_wall)
+          return true;
+        const auto [added, released] = update_rigid_wall(force, true);
+        if (added + released == 0)
+          return true;
+        pcout << "    rigid wall: " << added << " nodes in contact, "
+              << released << " released (" << rigid_wall->n_active()
+              << " held); solving the step again" << std::endl;
+        if (round + 1 >= prm.boundary_conditions.rigid_wall.maximum_set_changes)
+          {
+            last_failure =
+              "the active set of the rigid wall still changed after " +
+              std::to_string(round + 1) +
+              " solves ('Boundary conditions/Rigid wall/Maximum active set "
+              "changes')";
+            pcout << "    " << last_failure << std::endl;
+            return false;
+          }
+        constraints.distribute(solution_owned);
+        update_ghost_values();
+      }
   }
 
 
@@ -582,6 +671,15 @@ namespace pg
   {
     Timer timer;
     update = 0;
+    // Newmark adds c0 M, condensed for the constraints of the start, to
+    // the tangent: the rows of the DoFs held on a rigid wall since then
+    // would couple them (an inexact Newton direction, 9 instead of 1
+    // iterations per step on a linear block). Their rows become those of
+    // a constraint again (diagonal kept, right-hand side 0: du = 0 there).
+    if (rigid_wall && tangent_mass != nullptr)
+      for (const auto &[dof, value] : rigid_wall->values(true))
+        if (discretization.owned_dofs.is_element(dof))
+          matrix.clear_row(dof, matrix.diag_element(dof));
     try
       {
         std::function<const LinearAlgebra::SparseMatrix *()> amg_operator;

@@ -61,6 +61,9 @@ namespace pg
           v.begin()[i] = (u.begin()[i] - u_old.begin()[i]) / dt;
         ++i;
       }
+    // nodes held on a rigid wall: at rest (the difference quotient of the
+    // step that reached the wall is the approach velocity)
+    system.hold_at_wall(v);
     return true;
   }
 } // namespace pg

@@ -111,7 +111,27 @@ namespace pg
     operations.reference = [&](const double first) {
       return std::max({first, static_norm, Ma.l2_norm()});
     };
-    const NewtonSolver::Result result = NewtonSolver(newton).solve(operations);
+    NewtonSolver::Result result = NewtonSolver(newton).solve(operations);
+    // A rigid wall: with the reactions of the converged step (f_int -
+    // f_ext + M a_new), hold the nodes behind it, release the tensile ones
+    // and solve the step again until the set stays.
+    for (unsigned int round = 0; result.converged(); ++round)
+      {
+        LinearAlgebra::Vector reaction(system.unbalanced_force());
+        reaction += Ma;
+        const int changed = system.update_contact(reaction, round);
+        if (changed == 0)
+          break;
+        if (changed < 0)
+          {
+            result.outcome = NewtonSolver::Outcome::too_many_iterations;
+            result.failure = "the active set of the rigid wall kept changing";
+            break;
+          }
+        const unsigned int updates = result.updates;
+        result                     = NewtonSolver(newton).solve(operations);
+        result.updates += updates;
+      }
     system.set_tangent_mass(0, nullptr);
     last_residuals = result.residuals;
     last_failure   = result.failure;
@@ -132,6 +152,9 @@ namespace pg
       }
     v.compress(VectorOperation::insert);
     a.compress(VectorOperation::insert);
+    // nodes held on a rigid wall: at rest
+    system.hold_at_wall(v);
+    system.hold_at_wall(a);
     return true;
   }
 } // namespace pg

@@ -71,6 +71,28 @@ namespace pg
         dirichlet_node_sets;
 
       /**
+       * Subsection 'Rigid wall' of 'Boundary conditions': a rigid,
+       * frictionless plane through @p point (mesh length units) with the
+       * unit normal @p normal pointing into the body's side. A node (mesh
+       * vertex, particle) whose position x = X + u would cross it (n . (x -
+       * p) < 0) is held on it; with @p unilateral it is released again when
+       * its reaction turns tensile (RigidWall). Empty 'Normal': no wall.
+       */
+      struct RigidWall
+      {
+        bool                enabled = false;
+        std::vector<double> point, normal;
+        /** 'unilateral' (true) or 'two-sided' (held once touched). */
+        bool unilateral = true;
+        /**
+         * Quasi-static: how many times one load step is solved again
+         * because the active set changed before the step counts as failed.
+         */
+        unsigned int maximum_set_changes = 20;
+      };
+      RigidWall rigid_wall;
+
+      /**
        * Whether 'Dirichlet', 'Fixed points', 'Dirichlet boxes' or
        * 'Dirichlet node sets' is set.
        */

@@ -24,7 +24,7 @@ namespace pg
    * boundaries, where no Dirichlet condition holds the normal component).
    * Built from all cells on every rank (parallel::shared::Triangulation
    * knows them all), so every rank has the constraints of every DoF its
-   * families touch. Later: the contact active set.
+   * families touch. Then the held DoFs of a rigid wall (RigidWall).
    */
   template <int dim>
   class BoundaryConstraints
@@ -46,12 +46,16 @@ namespace pg
      * @p homogeneous the prescribed values are zero (Newton updates).
      * Throws ExcBadParameter naming the entry for a fixed point off the mesh,
      * an empty box, a non-planar or missing symmetry boundary, and a NaN or
-     * inf prescribed value.
+     * inf prescribed value. The @p extra_values (the held DoFs of a
+     * RigidWall and their values) are added last, on the DoFs that are
+     * still free.
      */
     void
-    make(const IndexSet            &relevant_dofs,
-         const bool                 homogeneous,
-         AffineConstraints<double> &c) const;
+    make(
+      const IndexSet                                  &relevant_dofs,
+      const bool                                       homogeneous,
+      AffineConstraints<double>                       &c,
+      const std::map<types::global_dof_index, double> &extra_values = {}) const;
 
   private:
     const DoFHandler<dim>                &dof_handler;

@@ -5,6 +5,7 @@
 #include <pg/base/global.h>
 #include <pg/base/linear_algebra.h>
 #include <pg/base/parameters.h>
+#include <pg/constraints/rigid_wall.h>
 #include <pg/elements/cpd_interactions.h>
 #include <pg/elements/family_elements.h>
 #include <pg/elements/quadrature_table.h>
@@ -178,6 +179,8 @@ namespace pg
       /** The node sets of an Exodus II mesh file (Discretization). */
       const std::map<std::string, std::vector<unsigned int>> *node_sets =
         nullptr;
+      /** 'Boundary conditions/Rigid wall' and its active set, or null. */
+      const RigidWall<dim> *rigid_wall = nullptr;
 
       /**
        * Wall times (s) of the phases and the timers, for summary.timing

@@ -70,6 +70,15 @@ namespace pg
      */
     std::map<std::string, std::vector<double>> node_set_reactions;
     /**
+     * 'Boundary conditions/Rigid wall': the wall's force on the body (sum
+     * of f_int - f_ext over the held nodes, dim components; empty without
+     * a wall), the number of held nodes and min n . (x - p) over all
+     * nodes, at the last output step.
+     */
+    std::vector<double> wall_reaction;
+    unsigned int        wall_active_nodes = 0;
+    double              wall_min_gap      = 0;
+    /**
      * The traction of one Neumann id at load factor 1 on the particles
      * ('test functions' or 'geometry'; ParticleLoads::Resultant): its
      * resultant force and moment about the centre (the area centroid of

@@ -8,6 +8,7 @@
 #include <pg/base/global.h>
 #include <pg/base/linear_algebra.h>
 #include <pg/base/parameters.h>
+#include <pg/constraints/rigid_wall.h>
 #include <pg/dofs/discretization.h>
 #include <pg/elements/correction_system.h>
 #include <pg/elements/element_group.h>
@@ -167,8 +168,39 @@ namespace pg
     void
     apply_dirichlet_values() override
     {
+      // dynamics: the rigid wall's active set once per step, at the
+      // predicted displacement and the forces of the last step
+      // (Newmark: nodes are released after the solve, update_contact(),
+      // where the reactions include the inertia)
+      if (rigid_wall)
+        {
+          update_ghost_values();
+          update_rigid_wall(force, prm.time.integrator == "leapfrog");
+        }
       constraints.distribute(solution_owned);
     }
+
+    void
+    hold_at_wall(LinearAlgebra::Vector &v) const override
+    {
+      if (rigid_wall)
+        rigid_wall->hold(v);
+    }
+
+    /**
+     * Update the active set of the rigid wall (RigidWall::update()) at
+     * the current displacement and the nodal reactions @p reaction (f_int
+     * - f_ext, or with Newmark's inertia), releasing tensile nodes if
+     * @p release, and rebuild both constraints if it changed. Returns the
+     * numbers of nodes activated and released.
+     */
+    std::pair<unsigned int, unsigned int>
+    update_rigid_wall(const LinearAlgebra::Vector &reaction,
+                      const bool                   release);
+
+    int
+    update_contact(const LinearAlgebra::Vector &reaction,
+                   const unsigned int           round) override;
 
     const AffineConstraints<double> &
     homogeneous_constraints() const override
@@ -310,8 +342,15 @@ namespace pg
     /** Sizes, assembly counts, Newton residuals and VC measures. */
     RunSummary &summary;
 
-    AffineConstraints<double>   constraints, zero_constraints;
-    LinearAlgebra::SparseMatrix matrix;
+    AffineConstraints<double> constraints, zero_constraints;
+    /**
+     * 'Boundary conditions/Rigid wall' (null without one), and the
+     * homogeneous constraints without its lines (which DoFs other
+     * conditions hold).
+     */
+    std::unique_ptr<RigidWall<dim>> rigid_wall;
+    AffineConstraints<double>       wall_free_constraints;
+    LinearAlgebra::SparseMatrix     matrix;
     /**
      * 'AMG operator = Q1 cells' or 'automatic' (with particles, cg or gmres,
      * hexahedral / quadrilateral cells): the Q1

@@ -119,6 +119,33 @@ namespace pg
     /** Newton's operations on the static residual. */
     virtual NewtonSolver::Operations
     newton_operations() = 0;
+
+    /**
+     * Zero the entries of @p v (a velocity or acceleration) at the DoFs
+     * held on a rigid wall (none by default).
+     */
+    virtual void
+    hold_at_wall(LinearAlgebra::Vector &v) const
+    {
+      (void)v;
+    }
+
+    /**
+     * After the converged Newton solve number @p round (0, 1, ...) of an
+     * implicit time step: update the active set of a rigid wall with the
+     * nodal reactions @p reaction (f_int - f_ext + M a) and, if it
+     * changed, impose the new constraints on displacement(). Returns 0 if
+     * the set stayed (none by default), 1 if it changed and the step is to
+     * be solved again, -1 if it changed too often (the step fails).
+     */
+    virtual int
+    update_contact(const LinearAlgebra::Vector &reaction,
+                   const unsigned int           round)
+    {
+      (void)reaction;
+      (void)round;
+      return 0;
+    }
   };
 } // namespace pg
 
