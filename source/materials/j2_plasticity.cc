@@ -43,7 +43,10 @@ namespace pg
 
     template <int dim>
     J2Plasticity<dim>::J2Plasticity(const Parameters::Material &parameters)
-      : kappa(parameters.lambda() + 2. / 3. * parameters.mu())
+      : JacobianVolumetricSplit<dim>(parameters.lambda() +
+                                       2. / 3. * parameters.mu(),
+                                     J2::model_name)
+      , kappa(parameters.lambda() + 2. / 3. * parameters.mu())
       , mu(parameters.mu())
       , initial_yield_stress(parameters.initial_yield_stress)
       , saturation_yield_stress(parameters.saturation_yield_stress)
@@ -408,7 +411,7 @@ namespace pg
     J2Plasticity<dim>::strain_energy_density(const Tensor<2, dim> &F) const
     {
       return isochoric_strain_energy_density(F) +
-             volumetric_strain_energy_density(
+             this->volumetric_strain_energy_density(
                checked_jacobian(F, J2::model_name));
     }
 
@@ -471,95 +474,6 @@ namespace pg
                     false,
                     P_iso,
                     &A_iso);
-    }
-
-
-
-    template <int dim>
-    double
-    J2Plasticity<dim>::volume_measure(const Tensor<2, dim> &F) const
-    {
-      return checked_jacobian(F, J2::model_name);
-    }
-
-
-
-    template <int dim>
-    Tensor<2, dim>
-    J2Plasticity<dim>::volume_measure_derivative(const Tensor<2, dim> &F) const
-    {
-      return checked_jacobian(F, J2::model_name) * transpose(invert(F));
-    }
-
-
-
-    template <int dim>
-    void
-    J2Plasticity<dim>::add_volume_measure_second_derivative(
-      const Tensor<2, dim> &F,
-      const double          factor,
-      Tensor<4, dim>       &A) const
-    {
-      const double         fJ    = factor * checked_jacobian(F, J2::model_name);
-      const Tensor<2, dim> F_inv = invert(F);
-      for (unsigned int a = 0; a < dim; ++a)
-        for (unsigned int b = 0; b < dim; ++b)
-          for (unsigned int c = 0; c < dim; ++c)
-            for (unsigned int d = 0; d < dim; ++d)
-              A[a][b][c][d] +=
-                fJ * (F_inv[b][a] * F_inv[d][c] - F_inv[b][c] * F_inv[d][a]);
-    }
-
-
-
-    namespace J2
-    {
-      /** Theta, and throw if Theta <= 0. */
-      inline double
-      checked_volume_ratio(const double Theta)
-      {
-        AssertThrow(Theta > 0.,
-                    ExcMessage("The volume ratio Theta = " +
-                               Utilities::to_string(Theta) +
-                               " <= 0: the volumetric potential W_vol of the "
-                               "J2 plasticity material is undefined there. "
-                               "Reduce the load step by increasing 'Load "
-                               "steps' in subsection 'Loading'."));
-        return Theta;
-      }
-    } // namespace J2
-
-
-
-    template <int dim>
-    double
-    J2Plasticity<dim>::volumetric_strain_energy_density(
-      const double Theta) const
-    {
-      J2::checked_volume_ratio(Theta);
-      return 0.25 * kappa * (Theta * Theta - 1. - 2. * std::log(Theta));
-    }
-
-
-
-    template <int dim>
-    double
-    J2Plasticity<dim>::volumetric_strain_energy_derivative(
-      const double Theta) const
-    {
-      J2::checked_volume_ratio(Theta);
-      return 0.5 * kappa * (Theta - 1. / Theta);
-    }
-
-
-
-    template <int dim>
-    double
-    J2Plasticity<dim>::volumetric_strain_energy_second_derivative(
-      const double Theta) const
-    {
-      J2::checked_volume_ratio(Theta);
-      return 0.5 * kappa * (1. + 1. / (Theta * Theta));
     }
 
 

@@ -1,8 +1,8 @@
 #ifndef pg_materials_isochoric_volumetric_neo_hooke_h
 #define pg_materials_isochoric_volumetric_neo_hooke_h
 
+#include <pg/materials/jacobian_volumetric_split.h>
 #include <pg/materials/material.h>
-#include <pg/materials/volumetric_split.h>
 
 namespace pg
 {
@@ -51,7 +51,7 @@ namespace pg
      */
     template <int dim>
     class IsochoricVolumetricNeoHooke : public Material<dim>,
-                                        public VolumetricSplit<dim>
+                                        public JacobianVolumetricSplit<dim>
     {
     public:
       /**
@@ -97,42 +97,8 @@ namespace pg
                          Tensor<2, dim>       &P_iso,
                          Tensor<4, dim>       &A_iso) const final;
 
-      /**
-       * W_vol(Theta) = K/4 (Theta^2 - 1 - 2 ln Theta) of the volume ratio
-       * Theta (Theta = J in the displacement formulation), energy per
-       * reference volume.
-       */
-      double
-      volumetric_strain_energy_density(const double Theta) const final;
-
-      /**
-       * W_vol'(Theta) = K/2 (Theta - 1/Theta), the pressure p of eq. (2.60);
-       * P_vol = J W_vol'(J) F^{-T}. Units: force per area.
-       */
-      double
-      volumetric_strain_energy_derivative(const double Theta) const final;
-
-      /** W_vol''(Theta) = K/2 (1 + 1/Theta^2). Units: force per area. */
-      double
-      volumetric_strain_energy_second_derivative(
-        const double Theta) const final;
-
-      /** theta = J = det F. */
-      double
-      volume_measure(const Tensor<2, dim> &F) const final;
-
-      /** d J / dF = J F^{-T}. */
-      Tensor<2, dim>
-      volume_measure_derivative(const Tensor<2, dim> &F) const final;
-
-      /**
-       * A_ABCD += factor J (F^{-1}_{BA} F^{-1}_{DC} - F^{-1}_{BC}
-       * F^{-1}_{DA}).
-       */
-      void
-      add_volume_measure_second_derivative(const Tensor<2, dim> &F,
-                                           const double          factor,
-                                           Tensor<4, dim>       &A) const final;
+      // theta = J and W_vol(Theta) = K/4 (Theta^2 - 1 - 2 ln Theta):
+      // JacobianVolumetricSplit.
 
       /** The bulk modulus K = lambda + 2/3 mu. */
       double

@@ -1,8 +1,8 @@
 #ifndef pg_materials_j2_plasticity_h
 #define pg_materials_j2_plasticity_h
 
+#include <pg/materials/jacobian_volumetric_split.h>
 #include <pg/materials/material.h>
-#include <pg/materials/volumetric_split.h>
 
 #include <array>
 #include <string>
@@ -116,7 +116,8 @@ namespace pg
      * if the local Newton iteration does not converge.
      */
     template <int dim>
-    class J2Plasticity : public Material<dim>, public VolumetricSplit<dim>
+    class J2Plasticity : public Material<dim>,
+                         public JacobianVolumetricSplit<dim>
     {
     public:
       /** Number of state variables per evaluation point. */
@@ -217,31 +218,7 @@ namespace pg
                          Tensor<2, dim>       &P_iso,
                          Tensor<4, dim>       &A_iso) const final;
 
-      /** theta = J. */
-      double
-      volume_measure(const Tensor<2, dim> &F) const final;
-
-      /** J F^{-T}. */
-      Tensor<2, dim>
-      volume_measure_derivative(const Tensor<2, dim> &F) const final;
-
-      void
-      add_volume_measure_second_derivative(const Tensor<2, dim> &F,
-                                           const double          factor,
-                                           Tensor<4, dim>       &A) const final;
-
-      /** K/4 (Theta^2 - 1 - 2 ln Theta). */
-      double
-      volumetric_strain_energy_density(const double Theta) const final;
-
-      /** K/2 (Theta - 1/Theta). */
-      double
-      volumetric_strain_energy_derivative(const double Theta) const final;
-
-      /** K/2 (1 + 1/Theta^2). */
-      double
-      volumetric_strain_energy_second_derivative(
-        const double Theta) const final;
+      // theta = J and W_vol: JacobianVolumetricSplit.
       /** @} */
 
       /** sigma_y(alpha), force per area. */
