@@ -171,6 +171,7 @@ namespace pg
                     const ArrayView<double>       &values) const
       {
         (void)state;
+        (void)values;
         AssertDimension(values.size(), 0);
       }
       /** @} */
