@@ -382,8 +382,9 @@ namespace pg
 
   template <int dim>
   int
-  DiscreteSystem<dim>::update_contact(const LinearAlgebra::Vector &reaction,
-                                      const unsigned int           round)
+  DiscreteSystem<dim>::update_active_set(const LinearAlgebra::Vector &reaction,
+                                         const unsigned int           round,
+                                         std::string                 &failure)
   {
     if (!rigid_wall)
       return 0;
@@ -395,16 +396,29 @@ namespace pg
           << " held); solving the step again" << std::endl;
     if (round + 1 >= prm.boundary_conditions.rigid_wall.maximum_set_changes)
       {
-        pcout << "    the active set of the rigid wall still changed after "
-              << round + 1
-              << " solves ('Boundary conditions/Rigid wall/Maximum active "
-                 "set changes')"
-              << std::endl;
+        failure = "the active set of the rigid wall still changed after " +
+                  std::to_string(round + 1) +
+                  " solves ('Boundary conditions/Rigid wall/Maximum active "
+                  "set changes')";
+        pcout << "    " << failure << std::endl;
         return -1;
       }
     constraints.distribute(solution_owned);
-    displacement_changed();
     return 1;
+  }
+
+
+
+  template <int dim>
+  int
+  DiscreteSystem<dim>::update_contact(const LinearAlgebra::Vector &reaction,
+                                      const unsigned int           round)
+  {
+    std::string failure;
+    const int   changed = update_active_set(reaction, round, failure);
+    if (changed == 1)
+      displacement_changed();
+    return changed;
   }
 
 
@@ -602,25 +616,9 @@ namespace pg
         if (!result.converged())
           return false;
         summary.newton_residuals.push_back(result.residuals);
-        if (!rigid_wall)
-          return true;
-        const auto [added, released] = update_rigid_wall(force, true);
-        if (added + released == 0)
-          return true;
-        pcout << "    rigid wall: " << added << " nodes in contact, "
-              << released << " released (" << rigid_wall->n_active()
-              << " held); solving the step again" << std::endl;
-        if (round + 1 >= prm.boundary_conditions.rigid_wall.maximum_set_changes)
-          {
-            last_failure =
-              "the active set of the rigid wall still changed after " +
-              std::to_string(round + 1) +
-              " solves ('Boundary conditions/Rigid wall/Maximum active set "
-              "changes')";
-            pcout << "    " << last_failure << std::endl;
-            return false;
-          }
-        constraints.distribute(solution_owned);
+        const int changed = update_active_set(force, round, last_failure);
+        if (changed <= 0)
+          return changed == 0;
         update_ghost_values();
       }
   }

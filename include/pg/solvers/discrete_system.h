@@ -198,6 +198,18 @@ namespace pg
     update_rigid_wall(const LinearAlgebra::Vector &reaction,
                       const bool                   release);
 
+    /**
+     * After a converged solve of round @p round of a step: update the
+     * active set from @p reaction (update_rigid_wall(), releasing) and
+     * print what changed. 0: unchanged (or no wall); 1: changed, the
+     * constraints are rebuilt and distributed, solve again; -1: changed
+     * 'Maximum active set changes' times, @p failure says so.
+     */
+    int
+    update_active_set(const LinearAlgebra::Vector &reaction,
+                      const unsigned int           round,
+                      std::string                 &failure);
+
     int
     update_contact(const LinearAlgebra::Vector &reaction,
                    const unsigned int           round) override;
