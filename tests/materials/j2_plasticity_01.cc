@@ -16,6 +16,7 @@
 #include <pg/materials/material.h>
 
 #include "../tests.h"
+#include "tensor_tools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,34 +48,6 @@ necking_material()
   parameters.linear_hardening_modulus = 0.13;
   parameters.saturation_exponent      = 16.93;
   return parameters;
-}
-
-
-
-template <int dim>
-double
-max_abs(const Tensor<2, dim> &T)
-{
-  double m = 0.;
-  for (unsigned int a = 0; a < dim; ++a)
-    for (unsigned int b = 0; b < dim; ++b)
-      m = std::max(m, std::abs(T[a][b]));
-  return m;
-}
-
-
-
-template <int dim>
-double
-max_abs(const Tensor<4, dim> &T)
-{
-  double m = 0.;
-  for (unsigned int a = 0; a < dim; ++a)
-    for (unsigned int b = 0; b < dim; ++b)
-      for (unsigned int c = 0; c < dim; ++c)
-        for (unsigned int d = 0; d < dim; ++d)
-          m = std::max(m, std::abs(T[a][b][c][d]));
-  return m;
 }
 
 
@@ -233,35 +206,6 @@ uniaxial(const double stretch)
 
 
 
-template <int dim>
-Tensor<2, dim>
-rotation()
-{
-  Tensor<2, dim> Q;
-  const double   angle = 0.7;
-  const double   c = std::cos(angle), s = std::sin(angle);
-  if (dim == 2)
-    {
-      Q[0][0] = c, Q[0][1] = -s, Q[1][0] = s, Q[1][1] = c;
-    }
-  else
-    {
-      // Rodrigues with the axis (1, 2, 3) / sqrt(14).
-      const double n[3] = {1. / std::sqrt(14.),
-                           2. / std::sqrt(14.),
-                           3. / std::sqrt(14.)};
-      for (unsigned int a = 0; a < dim; ++a)
-        for (unsigned int b = 0; b < dim; ++b)
-          Q[a][b] = (a == b ? c : 0.) + (1. - c) * n[a] * n[b];
-      Q[0][1] -= s * n[2], Q[1][0] += s * n[2];
-      Q[0][2] += s * n[1], Q[2][0] -= s * n[1];
-      Q[1][2] -= s * n[0], Q[2][1] += s * n[0];
-    }
-  return Q;
-}
-
-
-
 /** Q (I + g H) with a fixed pseudo-random H (entries in [-1, 1]). */
 template <int dim>
 Tensor<2, dim>
@@ -273,7 +217,7 @@ general(const double g)
     for (unsigned int b = 0; b < dim; ++b)
       H[a][b] = 2. * (generator() / 4294967295.) - 1.;
   H[0][1] += 1.; // a dominant shear
-  return rotation<dim>() * (unit_symmetric_tensor<dim>() + g * H);
+  return rotation<dim>(0.7) * (unit_symmetric_tensor<dim>() + g * H);
 }
 
 

@@ -9,6 +9,7 @@
 #include <pg/materials/material.h>
 
 #include "../tests.h"
+#include "tensor_tools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,70 +33,6 @@ make_parameters(const std::string &model, const std::string &plane)
   parameters.density        = 1.;
   parameters.plane          = plane;
   return parameters;
-}
-
-
-
-// Entries uniform in [-1, 1] from std::mt19937, whose sequence the standard
-// fixes (unlike that of std::uniform_real_distribution).
-template <int dim>
-Tensor<2, dim>
-random_tensor(std::mt19937 &generator)
-{
-  Tensor<2, dim> H;
-  for (unsigned int a = 0; a < dim; ++a)
-    for (unsigned int b = 0; b < dim; ++b)
-      H[a][b] = 2. * (generator() / 4294967295.) - 1.;
-  return H;
-}
-
-
-
-template <int dim>
-double
-max_abs(const Tensor<2, dim> &T)
-{
-  double m = 0.;
-  for (unsigned int a = 0; a < dim; ++a)
-    for (unsigned int b = 0; b < dim; ++b)
-      m = std::max(m, std::abs(T[a][b]));
-  return m;
-}
-
-
-
-template <int dim>
-Tensor<2, dim>
-rotation()
-{
-  Tensor<2, dim> Q;
-  const double   angle = 0.9;
-  if (dim == 2)
-    {
-      Q[0][0] = std::cos(angle);
-      Q[0][1] = -std::sin(angle);
-      Q[1][0] = std::sin(angle);
-      Q[1][1] = std::cos(angle);
-    }
-  else
-    {
-      // Rodrigues: Q = cos 1 + sin [n]x + (1 - cos) n n^T.
-      const double n[3] = {1. / std::sqrt(14.),
-                           2. / std::sqrt(14.),
-                           3. / std::sqrt(14.)};
-      const double c    = std::cos(angle);
-      const double s    = std::sin(angle);
-      for (unsigned int a = 0; a < dim; ++a)
-        for (unsigned int b = 0; b < dim; ++b)
-          Q[a][b] = (a == b ? c : 0.) + (1. - c) * n[a] * n[b];
-      Q[0][1] -= s * n[2];
-      Q[1][0] += s * n[2];
-      Q[0][2] += s * n[1];
-      Q[2][0] -= s * n[1];
-      Q[1][2] -= s * n[0];
-      Q[2][1] += s * n[0];
-    }
-  return Q;
 }
 
 
@@ -204,7 +141,7 @@ check(const std::string &model, const std::string &plane)
 
     if (finite_strain)
       {
-        const Tensor<2, dim> Q = rotation<dim>();
+        const Tensor<2, dim> Q = rotation<dim>(0.9);
         print_bound("|Q Q^T - 1|", max_abs(Q * transpose(Q) - I), 1e-15);
         print_bound("|P(QF) - Q P(F)| / |P(F)|",
                     max_abs(material->first_piola_stress(Q * F) - Q * P) /
