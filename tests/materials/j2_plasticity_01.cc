@@ -16,6 +16,7 @@
 #include <pg/materials/material.h>
 
 #include "../tests.h"
+#include "necking_material.h"
 #include "tensor_tools.h"
 
 #include <algorithm>
@@ -31,24 +32,6 @@ using namespace pg;
 
 constexpr unsigned int n_state = Materials::J2Plasticity<3>::n_state;
 using State                    = std::vector<double>;
-
-
-
-Parameters::Material
-necking_material()
-{
-  Parameters::Material parameters;
-  parameters.model                    = "J2 plasticity";
-  parameters.youngs_modulus           = 206.9;
-  parameters.poissons_ratio           = 0.29;
-  parameters.density                  = 1.;
-  parameters.plane                    = "strain";
-  parameters.initial_yield_stress     = 0.45;
-  parameters.saturation_yield_stress  = 1.165;
-  parameters.linear_hardening_modulus = 0.13;
-  parameters.saturation_exponent      = 16.93;
-  return parameters;
-}
 
 
 
