@@ -445,6 +445,7 @@ namespace pg
                                         &d.external_work,
                                         &d.support_work,
                                         &d.balance,
+                                        &d.plastic_work,
                                         &d.disorder})
       archive &*series;
     archive &statistics;
