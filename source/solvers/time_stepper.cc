@@ -186,12 +186,17 @@ namespace pg
                           &f_int = state.f_int, &r_old = state.r_old;
     double &kinetic_constrained = state.kinetic_constrained;
 
-    // 1 at the constrained DoFs
+    // 1 at the constrained DoFs (the nodes held on a rigid wall change)
     LinearAlgebra::Vector constrained(owned, comm);
-    for (const auto i : owned)
-      if (system.homogeneous_constraints().is_constrained(i))
-        constrained(i) = 1.;
-    constrained.compress(VectorOperation::insert);
+    const auto            mark_constrained = [&]() {
+      constrained = 0;
+      for (const auto i : owned)
+        if (system.homogeneous_constraints().is_constrained(i))
+          constrained(i) = 1.;
+      constrained.compress(VectorOperation::insert);
+    };
+    mark_constrained();
+    const bool contact = !system.contact_state().empty();
 
     // a restart keeps the step of the run it continues
     if (!restarted)
@@ -320,14 +325,16 @@ namespace pg
           }
         unsigned int iterations                       = 0;
         u_old                                         = system.displacement();
-        const double          kinetic_constrained_old = kinetic_constrained;
+        double                kinetic_constrained_old = kinetic_constrained;
         LinearAlgebra::Vector f_ext_old(f_ext), f_int_old(f_int);
-        // what an adaptive step restores when it is redone
+        // what an adaptive step restores when it is redone (and the
+        // velocity that a rigid wall stops)
         LinearAlgebra::Vector v_old, a_old;
         std::vector<bool>     contact_old;
+        if (adaptive || (explicit_ && contact))
+          v_old = v;
         if (adaptive)
           {
-            v_old       = v;
             a_old       = a;
             contact_old = system.contact_state();
           }
@@ -418,6 +425,20 @@ namespace pg
         result.newton_iterations += iterations;
         operations.step_done(step, iterations);
 
+        // A node that the wall held in this step lost its kinetic energy
+        // to the wall (leapfrog: it stops; the source's inelastic contact):
+        // the support work of the constrained DoFs' kinetic energy counts
+        // the held set after the step at the velocities before it.
+        if (explicit_ && contact)
+          {
+            mark_constrained();
+            double e_constrained = 0;
+            for (unsigned int i = 0; i < v_old.locally_owned_size(); ++i)
+              e_constrained += constrained.begin()[i] * 0.5 *
+                               masses.lumped.begin()[i] * v_old.begin()[i] *
+                               v_old.begin()[i];
+            kinetic_constrained_old = Utilities::MPI::sum(e_constrained, comm);
+          }
         // energies (trapezoidal rule)
         du = system.displacement();
         du -= u_old;
