@@ -192,7 +192,9 @@ namespace pg
             discretization.family_elements.get() :
             nullptr,
           formulation.condensed_pressure_degree());
-        // eq. (6.20) without plasticity: E~ = E, nu~ = min(0.49, nu)
+        // eq. (6.20) with E~ = E, also under plasticity, where the source
+        // softens it to |sigma_vM / alpha| (doc/ambiguities.md), and
+        // nu~ = min(0.49, nu)
         const double nu = prm.material.poissons_ratio;
         // (a material with history: the pseudo-material is the elastic
         // isochoric-volumetric neo-Hooke of the same constants, which is
