@@ -66,23 +66,34 @@ def main():
     vtu_dir, fig_dir = sys.argv[1:3]
     b16 = len(sys.argv) > 3
     if b16:
+        # every B-16 run: the section at 3 us, its impact region magnified
+        # (the gap between rod and wall: the cavity), and the last output
         files = sorted(glob.glob(os.path.join(vtu_dir, "b16_*_solution_0003.vtu")))
-        for f3 in files:
+        if not files:
+            return
+        fig, axs = plt.subplots(len(files), 3, figsize=(13, 3.6 * len(files)),
+                                squeeze=False)
+        pc = None
+        for row, f3 in zip(axs, files):
             tag = os.path.basename(f3)[:-len("_solution_0003.vtu")]
-            panels = [(f3, "t = 3 us")]
+            pc, m = draw(row[0], f3, 3.0, "")
+            row[0].set_title("B-16 %s, t = 3 us (max cell value %.2f)" % (name_of(tag), m), fontsize=8)
+            row[0].set_ylabel("z (mm)", fontsize=7)
+            draw(row[1], f3, 3.0, "")
+            row[1].set_aspect("auto")
+            row[1].set_xlim(-6.5, 6.5)
+            row[1].set_ylim(-0.05, 0.6)
+            row[1].axhline(0, color="k", lw=1.5)
+            row[1].set_title("impact end at 3 us, z magnified (black: the wall)", fontsize=8)
             last = os.path.join(vtu_dir, tag + "_solution_final.vtu")
             if os.path.exists(last):
-                panels.append((last, "last output"))
-            fig, axs = plt.subplots(1, len(panels), figsize=(4 * len(panels), 4))
-            axs = np.atleast_1d(axs)
-            for ax, (p, when) in zip(axs, panels):
-                pc, m = draw(ax, p, 3.0, "B-16 %s, %s (max %.2f)" % (name_of(tag), when, 0))
-                ax.set_title("B-16 %s, %s\nmax cell value %.2f" % (name_of(tag), when, m), fontsize=8)
-                ax.set_ylabel("z (mm)", fontsize=7)
-            fig.colorbar(pc, ax=list(axs), label="equivalent plastic strain (cell mean)")
-            out = os.path.join(fig_dir, "taylor_anvil_b16.png")
-            fig.savefig(out, dpi=130)
-            print("wrote", out)
+                pc, m = draw(row[2], last, 3.0, "")
+                row[2].set_aspect("auto")
+                row[2].set_title("last output before the end or the failure\n(max cell value %.2f; z and x not to scale)" % m, fontsize=8)
+        fig.colorbar(pc, ax=list(axs.ravel()), label="equivalent plastic strain (cell mean)")
+        out = os.path.join(fig_dir, "taylor_anvil_b16.png")
+        fig.savefig(out, dpi=120)
+        print("wrote", out)
         return
     files = sorted(glob.glob(os.path.join(vtu_dir, "*_solution_final.vtu")))
     files = [f for f in files if not os.path.basename(f).startswith("b16_")]
