@@ -92,7 +92,7 @@ def main():
                 row[2].set_title("last output before the end or the failure\n(max cell value %.2f; z and x not to scale)" % m, fontsize=8)
         fig.colorbar(pc, ax=list(axs.ravel()), label="equivalent plastic strain (cell mean)")
         out = os.path.join(fig_dir, "taylor_anvil_b16.png")
-        fig.savefig(out, dpi=120)
+        fig.savefig(out, dpi=120, bbox_inches="tight")
         print("wrote", out)
         return
     files = sorted(glob.glob(os.path.join(vtu_dir, "*_solution_final.vtu")))
@@ -119,7 +119,7 @@ def main():
     axs[0].set_ylabel("z (mm)")
     fig.colorbar(pc, ax=list(axs), label="equivalent plastic strain (cell mean)", shrink=0.8)
     out = os.path.join(fig_dir, "taylor_anvil_ep.png")
-    fig.savefig(out, dpi=130)
+    fig.savefig(out, dpi=130, bbox_inches="tight")
     print("wrote", out)
 
 
