@@ -19,7 +19,7 @@
 # whose line is in the results is skipped (delete the file to redo
 # everything).
 # B16=1: instead, B-16 (750 m/s, L0 = 12.8 mm, 30 us) with VCPBG U1SIG on
-# N = ${B16_N:-2} (safety factor 0.05), VTU every 1 us, and the picture of
+# N = ${B16_N:-2} (safety factor 0.02), VTU every 1 us, and the picture of
 # the section y = 0 at 3 us (the cavity) and at the last output.
 # PLOT_ONLY=1: only the figures and the markdown table of the page. KEEP=1 keeps the work
 # directory (and prints it). PYTHON=<python with matplotlib>.
@@ -41,7 +41,7 @@ mkdir -p "$OUT" "$FIGS" "$VTU_DIR"
 if [ -n "$B16" ]; then
   RESULTS="$OUT/results_b16.txt"
   L0=12.8; V0=750; END=0.03; INTERVAL=0.001
-  [ -n "$RUNS" ] || RUNS="VCPBG U1SIG|leapfrog:0.05|${B16_N:-2}"
+  [ -n "$RUNS" ] || RUNS="VCPBG U1SIG|leapfrog:0.02|${B16_N:-2}"
 else
   RESULTS="$OUT/results.txt"
   L0=32.4; V0=227; END=0.08; INTERVAL=0.01
