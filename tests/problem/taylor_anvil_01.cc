@@ -25,10 +25,11 @@
 //    dv = 2 sigma_y0 / (rho c0) = 24.7 m/s, so that u_z(top) = -v L0/c0 -
 //    (v - dv)(t - L0/c0) = -4.27 mm at 20 us (before the next wave
 //    arrives). Checked: u_z(top) at 20 us within 5 % (measured 0.9 %;
-//    N = 2: 1.6 %), the velocity drop (v_z(top) over 19-21 us, + v)
-//    within 35 % of dv (3-D: the precursor is faster and carries a
-//    different stress; measured 24 %; a wrong sigma_y0 by a factor 2
-//    gives 100 %), the energy balance within 5 % and plastic strain.
+//    N = 2: 1.6 %), the velocity drop (v + the slope of u_z(top) over
+//    11.5-21 us) within 25 % of dv (3-D: the precursor is faster and
+//    carries a different stress; measured -7.5 %; a wrong sigma_y0 by a
+//    factor 2 gives 100 %), the energy balance within 5 % and plastic
+//    strain.
 //    The final length at 80 us is the benchmark's (safety factor 0.1,
 //    too slow for a Debug test); doc/benchmarks/taylor_anvil.md.
 
@@ -141,24 +142,33 @@ main(int argc, char **argv)
     const auto stats = read_statistics("output_taylor/statistics.txt");
     const std::vector<double> &t   = stats.at("time");
     const std::vector<double> &top = stats.at("top centre_uz");
-    // the output times nearest 19, 20 and 21 us
-    const auto at = [&](const double time) {
-      unsigned int best = 0;
-      for (unsigned int i = 0; i < t.size(); ++i)
-        if (std::abs(t[i] - time) < std::abs(t[best] - time))
-          best = i;
-      return best;
-    };
-    const unsigned int i19 = at(0.019), i20 = at(0.02), i21 = at(0.021);
-    const double       dv    = 2 * sigma_y0 / (rho * c0);
-    const double       u_top = -v * L0 / c0 - (v - dv) * (t[i20] - L0 / c0);
-    const double       v_top = (top[i21] - top[i19]) / (t[i21] - t[i19]);
-    const auto        &d     = run.dynamics;
+    // the output time nearest 20 us, and the top's mean velocity: the
+    // least-squares slope of u_z(top) over 11.5-21 us (statistics.txt
+    // prints 4 digits: differences of neighbouring outputs are noise)
+    unsigned int i20 = 0;
+    double       n = 0, st = 0, su = 0, stt = 0, stu = 0;
+    for (unsigned int i = 0; i < t.size(); ++i)
+      {
+        if (std::abs(t[i] - 0.02) < std::abs(t[i20] - 0.02))
+          i20 = i;
+        if (t[i] > 0.0115)
+          {
+            n += 1;
+            st += t[i];
+            su += top[i];
+            stt += t[i] * t[i];
+            stu += t[i] * top[i];
+          }
+      }
+    const double dv    = 2 * sigma_y0 / (rho * c0);
+    const double u_top = -v * L0 / c0 - (v - dv) * (t[i20] - L0 / c0);
+    const double v_top = (n * stu - st * su) / (n * stt - st * st);
+    const auto  &d     = run.dynamics;
     deallog << "FEM H1P0, 227 m/s, 20 us" << std::endl;
     print_bound("  |u_z(top) / closed form - 1|", top[i20] / u_top - 1, 0.05);
     print_bound("  |(v_z(top) + v) / (2 sigma_y0 / (rho c0)) - 1|",
                 (v_top + v) / dv - 1,
-                0.35);
+                0.25);
     print_bound("  |energy balance| / E_kin(0)",
                 d.balance.back() / d.kinetic[0],
                 0.05);
