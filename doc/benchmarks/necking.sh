@@ -28,7 +28,8 @@
 # resumes). Writes doc/benchmarks/necking/results_N<N><TAG>.txt, the
 # curves doc/benchmarks/necking/curve_N<N><TAG>_<sinf>_<code>.txt (elongation
 # in mm, force in kN, ep_max) and, with gnuplot, the figures
-# doc/figures/necking_N<N><TAG>_<sinf>.png (force) and
+# doc/figures/necking_N<N><TAG>_<sinf>.png (force), necking_ep_max_N<N><TAG>_<sinf>.png
+# (ep_max against the elongation) and
 # doc/figures/necking_ep_N<N><TAG>_<sinf>_<code>.png (ep on the section).
 set -e
 PG_SOLVE=$(realpath "${1:-build-release/applications/pg_solve/pg_solve}")
@@ -112,7 +113,7 @@ except OSError:
     pass
 with open(curve, "w") as c:
     c.write("# %s, sigma_yinf = %s: elongation (mm) | force of the bar (kN) | "
-            "ep_max\n0 0 0\n" % (f, s))
+            "ep_max\n" % (f, s))
     for r in rows:
         c.write("%.6g %.6g %.6g\n" % (r["load factor"] * float(u),
                                       4 * r.get("reaction_4_x", 0.),
@@ -166,6 +167,11 @@ set ylabel 'reaction force (kN)'
 set key bottom right
 set grid
 plot $plots
+set output '$FIG/necking_ep_max_N${N}${TAG}_${s}.png'
+set title 'B-13 necking, N = $N, sigma_yinf = $s kN/mm^2: largest equivalent plastic strain'
+set ylabel 'ep_max'
+set key top left
+plot $(echo "$plots" | sed 's/using 1:2/using 1:3/g')
 END
   done
 fi
