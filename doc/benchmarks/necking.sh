@@ -188,6 +188,7 @@ set size ratio -1
 set xlabel 'x (mm)'
 set ylabel 'y (mm)'
 set cblabel 'ep'
+set cbrange [0:1]
 set palette defined (0 'blue', 0.25 'cyan', 0.5 'green', 0.75 'yellow', 1 'red')
 plot '$c' using 1:2:3 with points pointtype 7 pointsize 0.8 palette notitle
 END
