@@ -49,7 +49,7 @@ RESULTS="$OUT/results_N${N}${TAG}.txt"
 WORK=$(mktemp -d)
 [ -n "$KEEP" ] && echo "work directory: $WORK"
 [ -f "$RESULTS" ] ||
-  echo "# sigma_yinf | formulation | mesh N | DoFs | elongation reached (mm) | F_max (kN) | elongation at F_max (mm) | F at the end (kN) | ep_max at the end | Newton iterations | accepted (sub)steps | wall (s) | status" > "$RESULTS"
+  echo "# sigma_yinf | formulation | mesh N | DoFs | elongation reached (mm) | F_max (kN) | elongation at F_max (mm) | F at the end (kN) | ep_max at the end | Newton iterations | load steps (cut steps count once) | wall (s) | status" > "$RESULTS"
 
 slug() { echo "$1" | tr ' +' '_p'; }
 
