@@ -26,6 +26,32 @@ namespace pg
         for (unsigned int c = 0; c < dim; ++c)
           statistics.add_value(name + "_u" + std::string(1, "xyz"[c]),
                                value[c]);
+      // The reaction of each Dirichlet boundary id (computed by Reactions,
+      // which runs before) and the largest value of each state output of a
+      // material with history (J2 plasticity: the equivalent plastic
+      // strain), per step: force-displacement curves and the growth of the
+      // plastic strain (benchmark B-13)
+      for (const auto &[id, reaction] : summary.reactions)
+        for (unsigned int c = 0; c < reaction.size(); ++c)
+          {
+            const std::string name =
+              "reaction_" + std::to_string(id) + "_" + std::string(1, "xyz"[c]);
+            statistics.add_value(name, reaction[c]);
+            statistics.set_scientific(name, true);
+            statistics.set_precision(name, 8);
+          }
+      const std::vector<std::string> state_names =
+        view.material->state_output_names();
+      if (!state_names.empty())
+        {
+          const std::vector<double> maxima = view.maximum_state_outputs();
+          for (unsigned int i = 0; i < state_names.size(); ++i)
+            {
+              statistics.add_value("max_" + state_names[i], maxima[i]);
+              statistics.set_scientific("max_" + state_names[i], true);
+              statistics.set_precision("max_" + state_names[i], 8);
+            }
+        }
       if (summary.have_errors)
         {
           statistics.add_value("L2 error", summary.L2);
