@@ -381,6 +381,19 @@ namespace pg
                           Patterns::Double(),
                           "gamma of Newmark's method (0.5 <= gamma <= 1); "
                           "gamma > 1/2 adds numerical damping.");
+        prm.declare_entry(
+          "Newmark predictor",
+          "newmark",
+          Patterns::Selection("newmark|last converged state"),
+          "Where Newton's method starts a Newmark step. 'newmark': at "
+          "u + dt v + dt^2 (1/2 - beta) a (the new acceleration 0). "
+          "'last converged state': at the displacement of the last step, "
+          "as a quasi-static step with 'Loading/Predictor = boundary values' "
+          "does (only the nodes with Dirichlet values move). Both with the "
+          "new Dirichlet values on their DoFs; the converged step is the "
+          "same, the number of Newton iterations and the largest step that "
+          "converges are not. 'Loading/Predictor' applies to quasi-static "
+          "load steps only.");
       }
       prm.leave_subsection();
     }
@@ -392,13 +405,14 @@ namespace pg
     {
       prm.enter_subsection("Time");
       {
-        integrator      = prm.get("Integrator");
-        end_time        = prm.get_double("End time");
-        time_step       = prm.get_double("Time step");
-        safety_factor   = prm.get_double("Safety factor");
-        output_interval = prm.get_double("Output interval");
-        beta            = prm.get_double("Newmark beta");
-        gamma           = prm.get_double("Newmark gamma");
+        integrator        = prm.get("Integrator");
+        end_time          = prm.get_double("End time");
+        time_step         = prm.get_double("Time step");
+        safety_factor     = prm.get_double("Safety factor");
+        output_interval   = prm.get_double("Output interval");
+        beta              = prm.get_double("Newmark beta");
+        gamma             = prm.get_double("Newmark gamma");
+        newmark_predictor = prm.get("Newmark predictor");
       }
       prm.leave_subsection();
 

@@ -104,6 +104,8 @@ namespace pg
       double output_interval;
       double beta;
       double gamma;
+      /** newmark | last converged state: where Newton starts a step */
+      std::string newmark_predictor;
 
       /** Is an integrator selected (not quasi-static load stepping)? */
       bool
