@@ -80,7 +80,7 @@ $ADAPTIVE
 end
 subsection Output
   set Directory = $dir/out
-  set VTU       = ${KEEP:+true}${KEEP:-false}
+  set VTU       = $([ -n "$KEEP" ] && echo true || echo false)
 end
 END
         start=$(date +%s.%N)
