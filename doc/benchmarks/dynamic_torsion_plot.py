@@ -92,7 +92,7 @@ def main():
     runs = [arg.split(":", 1) for arg in sys.argv[2:]]
     data = [(title, plastic_points(path)) for title, path in runs]
     top = max(max(e for _, _, e in p) for _, p in data) or 1.0
-    fig, axes = plt.subplots(1, len(data), figsize=(2.0 * len(data) + 1.0, 6.0), squeeze=False)
+    fig, axes = plt.subplots(1, len(data), figsize=(2.8 * len(data) + 1.2, 6.0), squeeze=False)
     for ax, (title, p) in zip(axes[0], data):
         p.sort(key=lambda q: q[2])
         scatter = ax.scatter([q[0] for q in p], [q[1] for q in p], c=[q[2] for q in p], s=14, cmap="jet", vmin=0.0, vmax=top)
