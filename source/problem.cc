@@ -445,6 +445,7 @@ namespace pg
                                         &d.external_work,
                                         &d.support_work,
                                         &d.balance,
+                                        &d.plastic_work,
                                         &d.disorder})
       archive &*series;
     archive &statistics;
@@ -472,6 +473,9 @@ namespace pg
                        serialize_state(archive);
                        CheckpointData::save(archive, system.displacement());
                        archive << system.history;
+                       // the rigid wall's active set (empty without)
+                       const std::vector<bool> contact = system.contact_state();
+                       archive << contact;
                        if (analysis_state)
                          analysis_state(archive);
                      });
@@ -514,6 +518,14 @@ namespace pg
                                                          "other evaluation points than this run. "
                                                          "Restart with the parameter file that wrote "
                                                          "it."));
+        std::vector<bool> contact;
+        archive >> contact;
+        AssertThrow(contact.size() == system.contact_state().size(),
+                    ExcMessage("The rigid wall of the checkpoint has other "
+                                                         "nodes than this run. Restart with the "
+                                                         "parameter file that wrote it."));
+        if (!contact.empty())
+          system.set_contact_state(contact);
         if (analysis_state)
           analysis_state(archive);
       });

@@ -64,6 +64,13 @@ namespace pg
           statistics.set_scientific(column, true);
           statistics.set_precision(column, 8);
         }
+      if (energies.plastic_work)
+        {
+          d.plastic_work.push_back(*energies.plastic_work);
+          statistics.add_value("plastic work", *energies.plastic_work);
+          statistics.set_scientific("plastic work", true);
+          statistics.set_precision("plastic work", 8);
+        }
       if (this->view().particles->n_particles() > 0)
         {
           d.disorder.push_back(particle_disorder());
@@ -151,6 +158,17 @@ namespace pg
         integrator =
           std::make_unique<Newmark>(masses, prm.time, prm.newton, access.pcout);
 
+      // the steps taken up to time t, for the summary
+      const auto record_steps = [&d](const TimeStepper::Result &r,
+                                     const unsigned int         n_steps,
+                                     const double               t) {
+        d.n_steps            = n_steps;
+        d.stable_time_step   = r.stable_time_step;
+        d.smallest_time_step = r.smallest_time_step;
+        d.largest_time_step  = r.largest_time_step;
+        d.step_cuts          = r.step_cuts;
+        d.final_time         = t;
+      };
       TimeStepper::Operations operations;
       operations.started = [&](const TimeStepper::Result &r) {
         d.stable_time_step = r.stable_time_step;
@@ -207,8 +225,10 @@ namespace pg
                            CheckpointData::load(archive, *x, name);
                          serialize_energies(archive);
                        });
-      operations.output  = access.postprocess;
+      operations.step_rejected = [&]() { access.history.revert(); };
+      operations.output        = access.postprocess;
       operations.give_up = [&](const unsigned int last_step, const double t) {
+        record_steps(state.result, state.step, t);
         access.history.revert();
         summary.converged = false;
         access.write_files(last_step, t);
@@ -226,6 +246,7 @@ namespace pg
                restarted);
       const unsigned int n_steps = result.n_steps;
       const double       t       = result.final_time;
+      record_steps(result, n_steps, t);
 
       const std::vector<Tensor<2, dim>> F =
         view.particle_deformation_gradients();

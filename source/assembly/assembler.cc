@@ -119,6 +119,39 @@ namespace pg
 
 
   template <int dim>
+  double
+  Assembler<dim>::integrate_committed_state(
+    const std::function<double(const ArrayView<const double> &)> &f,
+    const unsigned int n_material) const
+  {
+    AssertThrow(history != nullptr, ExcInternalError());
+    double integral = 0;
+    for (unsigned int g = 0; g < groups.size(); ++g)
+      {
+        const std::vector<double> weights =
+          groups[g]->evaluation_point_weights();
+        unsigned int i = 0;
+        for (unsigned int e = 0; e < groups[g]->n_elements(); ++e)
+          for (unsigned int q = 0; q < history->n_points(g, e); ++q, ++i)
+            {
+              AssertThrow(i < weights.size(),
+                          ExcMessage("The evaluation points of the " +
+                                     groups[g]->name() +
+                                     " have no quadrature weights: the "
+                                     "integral of the material state over "
+                                     "the body is not defined for them."));
+              const ArrayView<const double> state = history->committed(g, e, q);
+              integral +=
+                weights[i] *
+                f(make_array_view(state.begin(), state.begin() + n_material));
+            }
+      }
+    return integral;
+  }
+
+
+
+  template <int dim>
   void
   Assembler<dim>::add_sparsity(DynamicSparsityPattern &sparsity) const
   {

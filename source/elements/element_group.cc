@@ -60,6 +60,15 @@ namespace pg
 
 
   template <int dim>
+  std::vector<double>
+  ElementGroup<dim>::evaluation_point_weights() const
+  {
+    return {};
+  }
+
+
+
+  template <int dim>
   void
   ElementGroup<dim>::add_group_sparsity(
     const AffineConstraints<double> &constraints,

@@ -268,14 +268,32 @@ namespace pg
 
 
   template <int dim>
-  unsigned int
-  FamilyGroup<dim>::n_evaluation_points(const unsigned int e) const
+  const std::vector<QuadratureTable<dim>> &
+  FamilyGroup<dim>::evaluation_tables() const
   {
     // U1SUnl without the master's terms evaluates the material at the
     // points of its Unl table only
     if (stabilisation.tables != nullptr && !stabilisation.master_terms)
-      return (*stabilisation.tables)[e].n_points();
-    return family_tables[e].n_points();
+      return *stabilisation.tables;
+    return family_tables;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  FamilyGroup<dim>::n_evaluation_points(const unsigned int e) const
+  {
+    return evaluation_tables()[e].n_points();
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  FamilyGroup<dim>::evaluation_point_weights() const
+  {
+    return concatenated_weights(evaluation_tables(), this->n_elements());
   }
 
 

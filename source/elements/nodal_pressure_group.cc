@@ -94,6 +94,15 @@ namespace pg
 
 
   template <int dim>
+  std::vector<double>
+  NodalPressureFamilyGroup<dim>::evaluation_point_weights() const
+  {
+    return concatenated_weights(family_tables, this->n_elements());
+  }
+
+
+
+  template <int dim>
   std::unique_ptr<GroupScratch>
   NodalPressureFamilyGroup<dim>::create_scratch() const
   {
@@ -183,6 +192,15 @@ namespace pg
     const unsigned int e) const
   {
     return family_tables[e].n_points();
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  IncompressibleFamilyGroup<dim>::evaluation_point_weights() const
+  {
+    return concatenated_weights(family_tables, this->n_elements());
   }
 
 

@@ -118,6 +118,28 @@ namespace pg
 
 
   template <int dim>
+  std::vector<double>
+  Q1CellGroup<dim>::evaluation_point_weights() const
+  {
+    FEValues<dim>       fe_values(kind.mapping(),
+                            kind.scalar_element(),
+                            kind.fe_cell_quadrature(),
+                            update_JxW_values);
+    std::vector<double> weights;
+    weights.reserve(cells.size() * n_points);
+    for (const auto &cell : cells)
+      {
+        fe_values.reinit(
+          typename Triangulation<dim>::active_cell_iterator(cell));
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          weights.push_back(fe_values.JxW(q));
+      }
+    return weights;
+  }
+
+
+
+  template <int dim>
   std::unique_ptr<GroupScratch>
   Q1CellGroup<dim>::create_scratch() const
   {

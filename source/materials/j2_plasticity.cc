@@ -351,6 +351,32 @@ namespace pg
 
 
     template <int dim>
+    bool
+    J2Plasticity<dim>::is_dissipative() const
+    {
+      return true;
+    }
+
+
+
+    template <int dim>
+    double
+    J2Plasticity<dim>::plastic_work_density(
+      const ArrayView<const double> &state) const
+    {
+      AssertDimension(state.size(), n_state);
+      const double a = state[alpha_index];
+      const double saturation =
+        saturation_exponent > 0 ?
+          a - (1. - std::exp(-saturation_exponent * a)) / saturation_exponent :
+          0.;
+      return initial_yield_stress * a + 0.5 * hardening_modulus * a * a +
+             (saturation_yield_stress - initial_yield_stress) * saturation;
+    }
+
+
+
+    template <int dim>
     void
     J2Plasticity<dim>::evaluate(const Tensor<2, dim> &F,
                                 Tensor<2, dim>       &P,

@@ -410,6 +410,30 @@ namespace pg
           out << (b > 0 ? ", " : "") << json_list(s.box_reactions[b]);
         out << "],\n";
       }
+    if (!s.dynamics.integrator.empty())
+      {
+        const auto &d    = s.dynamics;
+        const auto  last = [](const std::vector<double> &v) {
+          return v.empty() ? std::numeric_limits<double>::quiet_NaN() :
+                              v.back();
+        };
+        out << "  \"dynamics\": {\"integrator\": \"" << d.integrator
+            << "\", \"time_step\": " << json_number(d.time_step)
+            << ", \"stable_time_step\": " << json_number(d.stable_time_step)
+            << ", \"smallest_time_step\": " << json_number(d.smallest_time_step)
+            << ", \"largest_time_step\": " << json_number(d.largest_time_step)
+            << ", \"n_steps\": " << d.n_steps
+            << ", \"step_cuts\": " << d.step_cuts
+            << ", \"final_time\": " << json_number(d.final_time)
+            << ", \"kinetic_energy\": " << json_number(last(d.kinetic))
+            << ", \"internal_work\": " << json_number(last(d.internal_work))
+            << ", \"external_work\": " << json_number(last(d.external_work))
+            << ", \"support_work\": " << json_number(last(d.support_work))
+            << ", \"energy_balance\": " << json_number(last(d.balance));
+        if (!d.plastic_work.empty())
+          out << ", \"plastic_work\": " << json_number(d.plastic_work.back());
+        out << "},\n";
+      }
     if (!s.wall_reaction.empty())
       out << "  \"wall_reaction\": " << json_list(s.wall_reaction)
           << ",\n  \"wall_active_nodes\": " << s.wall_active_nodes

@@ -166,6 +166,13 @@ namespace pg
           else
             pcout << ", E = " << prm.material.youngs_modulus
                   << ", nu = " << prm.material.poissons_ratio;
+          if (prm.material.model == "J2 plasticity")
+            pcout << "\n  yield stress:    sigma_y(alpha) = "
+                  << prm.material.initial_yield_stress << " + "
+                  << prm.material.linear_hardening_modulus << " alpha + ("
+                  << prm.material.saturation_yield_stress << " - "
+                  << prm.material.initial_yield_stress << ") (1 - exp(-"
+                  << prm.material.saturation_exponent << " alpha))";
           if (formulation.incompressible())
             pcout << " (incompressible: mu = " << prm.material.mu()
                   << ", the volume held by the family pressures)";

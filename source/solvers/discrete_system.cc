@@ -192,7 +192,9 @@ namespace pg
             discretization.family_elements.get() :
             nullptr,
           formulation.condensed_pressure_degree());
-        // eq. (6.20) without plasticity: E~ = E, nu~ = min(0.49, nu)
+        // eq. (6.20) with E~ = E, also under plasticity, where the source
+        // softens it to |sigma_vM / alpha| (doc/ambiguities.md), and
+        // nu~ = min(0.49, nu)
         const double nu = prm.material.poissons_ratio;
         // (a material with history: the pseudo-material is the elastic
         // isochoric-volumetric neo-Hooke of the same constants, which is
@@ -266,15 +268,20 @@ namespace pg
     const unsigned int n_material = material.n_state_variables();
     const unsigned int n_kernel =
       formulation.implicit_gradients ? dim * dim : 0;
-    history.reinit(
-      assembler->evaluation_points(),
-      n_material + n_kernel,
+    const auto initial_state =
       [this, n_material, n_kernel](const ArrayView<double> &state) {
         material.initialize_state(
           make_array_view(state.begin(), state.begin() + n_material));
         for (unsigned int i = 0; i < n_kernel; ++i)
           state[n_material + i] = (i / dim == i % dim ? 1. : 0.);
-      });
+      };
+    history.reinit(assembler->evaluation_points(),
+                   n_material + n_kernel,
+                   initial_state);
+    if (n_material + n_kernel > 0)
+      initial_history.reinit(assembler->evaluation_points(),
+                             n_material + n_kernel,
+                             initial_state);
     assembler->set_history(&history);
   }
 
@@ -405,6 +412,37 @@ namespace pg
       }
     constraints.distribute(solution_owned);
     return 1;
+  }
+
+
+
+  template <int dim>
+  void
+  DiscreteSystem<dim>::set_contact_state(const std::vector<bool> &state)
+  {
+    if (!rigid_wall)
+      return;
+    // (on every rank, also where the set stayed: the constraints are
+    // rebuilt collectively)
+    rigid_wall->set_active_set(state);
+    make_constraints(constraints, false);
+    make_constraints(zero_constraints, true);
+  }
+
+
+
+  template <int dim>
+  std::optional<double>
+  DiscreteSystem<dim>::plastic_work() const
+  {
+    if (!material.is_dissipative())
+      return {};
+    const double local = assembler->integrate_committed_state(
+      [this](const ArrayView<const double> &state) {
+        return material.plastic_work_density(state);
+      },
+      material.n_state_variables());
+    return Utilities::MPI::sum(local, comm);
   }
 
 
@@ -834,7 +872,11 @@ namespace pg
     const LinearAlgebra::Vector u_saved = solution;
     solution                            = 0;
     assembler->use_condensed_field_iterates(false);
+    // at u = 0 the initial state has no stress (the committed one may)
+    if (initial_history.n_variables() > 0)
+      assembler->set_history(&initial_history);
     assemble(false);
+    assembler->set_history(&history);
     assembler->use_condensed_field_iterates(true);
     solution = u_saved;
     // every rank stops alike (a load can fail on one rank's cells only)

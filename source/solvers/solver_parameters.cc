@@ -382,6 +382,60 @@ namespace pg
                           "gamma of Newmark's method (0.5 <= gamma <= 1); "
                           "gamma > 1/2 adds numerical damping.");
         prm.declare_entry(
+          "Time step control",
+          "fixed",
+          Patterns::Selection("fixed|adaptive"),
+          "'fixed': every step has the same size (leapfrog: unless 'Stable "
+          "step update interval' changes it) and a failed step ends the run. "
+          "'adaptive' (newmark only): a step whose Newton iteration (or "
+          "assembly) fails is redone from the last accepted state with half "
+          "the step, down to 'Minimum time step'; after two consecutive "
+          "steps that converged in at most 'Easy step iterations' Newton "
+          "updates the step grows by 'Step growth factor', up to 'Maximum "
+          "time step'. Steps are shortened to end at the output times and "
+          "at 'End time'. The run fails when a step of 'Minimum time step' "
+          "fails (the failure rule of the dissertation's dynamic torsion: "
+          "Newton fails for a further 0.1 degree step).");
+        prm.declare_entry("Minimum time step",
+                          "0",
+                          Patterns::Double(0.),
+                          "The smallest step: 'adaptive' fails when a step "
+                          "of this size fails; leapfrog with 'Stable step "
+                          "update interval' stops when the automatic step "
+                          "falls below it (the stable step collapsed). 0: "
+                          "1e-3 times the initial step. Units: time.");
+        prm.declare_entry("Maximum time step",
+                          "0",
+                          Patterns::Double(0.),
+                          "'adaptive': the step grows up to this size. 0: "
+                          "the initial step ('Time step', or the automatic "
+                          "one). Units: time.");
+        prm.declare_entry("Easy step iterations",
+                          "4",
+                          Patterns::Integer(1),
+                          "'adaptive': a step that converged in at most so "
+                          "many Newton updates counts as easy.");
+        prm.declare_entry("Step growth factor",
+                          "1.5",
+                          Patterns::Double(1.),
+                          "'adaptive': the factor (>= 1) by which the step "
+                          "grows after two consecutive easy steps.");
+        prm.declare_entry(
+          "Stable step update interval",
+          "0",
+          Patterns::Integer(0),
+          "Leapfrog: every so many steps, estimate 2 / omega_max again from "
+          "the tangent of the current state (the committed plastic state "
+          "gives the elastic tangent there, which sets the speed of "
+          "unloading waves) by power iteration; an automatic step ('Time "
+          "step = 0') becomes 'Safety factor' times the new estimate (a "
+          "change of the step is reported), a fixed 'Time step' above it "
+          "stops the run with the results kept. Needed where the stiffness "
+          "or the spacing of the nodes changes a lot (an impact compresses "
+          "the cells along the axis); each estimate costs one tangent "
+          "assembly and a few hundred products with it. 0: only the "
+          "initial estimate.");
+        prm.declare_entry(
           "Newmark predictor",
           "newmark",
           Patterns::Selection("newmark|last converged state"),
@@ -405,13 +459,20 @@ namespace pg
     {
       prm.enter_subsection("Time");
       {
-        integrator        = prm.get("Integrator");
-        end_time          = prm.get_double("End time");
-        time_step         = prm.get_double("Time step");
-        safety_factor     = prm.get_double("Safety factor");
-        output_interval   = prm.get_double("Output interval");
-        beta              = prm.get_double("Newmark beta");
-        gamma             = prm.get_double("Newmark gamma");
+        integrator           = prm.get("Integrator");
+        end_time             = prm.get_double("End time");
+        time_step            = prm.get_double("Time step");
+        safety_factor        = prm.get_double("Safety factor");
+        output_interval      = prm.get_double("Output interval");
+        beta                 = prm.get_double("Newmark beta");
+        gamma                = prm.get_double("Newmark gamma");
+        step_control         = prm.get("Time step control");
+        minimum_time_step    = prm.get_double("Minimum time step");
+        maximum_time_step    = prm.get_double("Maximum time step");
+        easy_step_iterations = prm.get_integer("Easy step iterations");
+        step_growth_factor   = prm.get_double("Step growth factor");
+        stable_step_update_interval =
+          prm.get_integer("Stable step update interval");
         newmark_predictor = prm.get("Newmark predictor");
       }
       prm.leave_subsection();
@@ -448,6 +509,34 @@ namespace pg
                   ExcBadParameter("Time/Newmark gamma",
                                   text(gamma),
                                   "it must lie in [0.5, 1]."));
+      AssertThrow(step_control == "fixed" || integrator == "newmark",
+                  ExcBadParameter("Time/Time step control",
+                                  step_control,
+                                  "an adaptive step needs 'Integrator = "
+                                  "newmark': the step of leapfrog is set by "
+                                  "stability, not by Newton's method (see "
+                                  "'Stable step update interval')."));
+      AssertThrow(maximum_time_step == 0. || time_step == 0. ||
+                    maximum_time_step >= time_step,
+                  ExcBadParameter("Time/Maximum time step",
+                                  text(maximum_time_step),
+                                  "it is smaller than 'Time step' (" +
+                                    text(time_step) +
+                                    "), the first step: use at least that, "
+                                    "or 0."));
+      AssertThrow(minimum_time_step == 0. ||
+                    ((time_step == 0. || minimum_time_step <= time_step) &&
+                     (maximum_time_step == 0. ||
+                      minimum_time_step <= maximum_time_step)),
+                  ExcBadParameter("Time/Minimum time step",
+                                  text(minimum_time_step),
+                                  "it exceeds 'Time step' or 'Maximum time "
+                                  "step': use a smaller value, or 0."));
+      AssertThrow(stable_step_update_interval == 0 || integrator == "leapfrog",
+                  ExcBadParameter("Time/Stable step update interval",
+                                  std::to_string(stable_step_update_interval),
+                                  "it applies to 'Integrator = leapfrog' "
+                                  "only (the explicit step limit). Use 0."));
     }
   } // namespace Parameters
 } // namespace pg

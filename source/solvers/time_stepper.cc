@@ -27,6 +27,17 @@ namespace pg
 
 
 
+  double
+  TimeStepper::stable_step(MechanicalSystem   &system,
+                           const MassMatrices &masses) const
+  {
+    const double omega2 =
+      TimeIntegration::largest_eigenvalue(system.tangent(), masses.inverse);
+    return omega2 > 0 ? 2. / std::sqrt(omega2) : time.end_time;
+  }
+
+
+
   void
   TimeStepper::choose_time_step(MechanicalSystem   &system,
                                 const MassMatrices &masses,
@@ -52,14 +63,12 @@ namespace pg
       }
     else
       {
-        const double omega2 =
-          TimeIntegration::largest_eigenvalue(system.tangent(), masses.inverse);
-        const double dt_stable  = omega2 > 0 ? 2. / std::sqrt(omega2) : T;
+        const double dt_stable  = stable_step(system, masses);
         result.stable_time_step = dt_stable;
         std::ostringstream line;
         line << std::setprecision(4) << "  time integrator: " << time.integrator
              << ", stable leapfrog step 2/omega_max = " << dt_stable
-             << " (omega_max = " << std::sqrt(omega2) << ")";
+             << " (omega_max = " << 2. / dt_stable << ")";
         out << line.str() << std::endl;
       }
     const double dt_stable = result.stable_time_step;
@@ -86,6 +95,77 @@ namespace pg
 
 
 
+  void
+  TimeStepper::update_stable_step(MechanicalSystem   &system,
+                                  const MassMatrices &masses,
+                                  State              &state,
+                                  const double        dt_min,
+                                  const Operations   &operations) const
+  {
+    const double t    = state.t;
+    const auto   text = [](const double x) {
+      std::ostringstream s;
+      s << std::setprecision(4) << x;
+      return s.str();
+    };
+    // the tangent of the accepted state (a plastic point evaluated at its
+    // committed state is elastic: no flow under the same F)
+    {
+      const std::string failure = system.assemble_residual(true);
+      AssertThrow(failure.empty(), ExcMessage(failure));
+    }
+    const double stable           = stable_step(system, masses);
+    state.result.stable_time_step = stable;
+    const std::string kept = " The results up to t = " + text(t) + " are in '" +
+                             output_directory + "'.";
+    if (time.time_step > 0)
+      {
+        if (time.time_step > stable)
+          {
+            operations.give_up(state.step, t);
+            AssertThrow(false,
+                        ExcBadParameter("Time/Time step",
+                                        text(time.time_step),
+                                        "it exceeds the stable step of "
+                                        "leapfrog at t = " +
+                                          text(t) +
+                                          ", 2/omega_max = " + text(stable) +
+                                          ": use a smaller step, or 0 for "
+                                          "the automatic one." +
+                                          kept));
+          }
+        return;
+      }
+    const double dt_new = time.safety_factor * stable;
+    if (dt_new < dt_min)
+      {
+        operations.give_up(state.step, t);
+        AssertThrow(false,
+                    ExcMessage("The stable step of leapfrog collapsed at t = " +
+                               text(t) +
+                               ": 'Safety factor' times 2/omega_max "
+                               "= " +
+                               text(dt_new) +
+                               " is below 'Minimum time step' in subsection "
+                               "'Time' (" +
+                               text(dt_min) +
+                               "). A cell or family is nearly inverted, or "
+                               "nodes nearly touch: look at the last "
+                               "output, or lower 'Minimum time step'." +
+                               kept));
+      }
+    if (std::abs(dt_new - state.dt) > 0.01 * state.dt)
+      {
+        out << "  t = " << text(t)
+            << ": stable step 2/omega_max = " << text(stable) << ", time step "
+            << text(state.dt) << " -> " << text(dt_new) << std::endl;
+        state.dt      = dt_new;
+        state.uniform = false;
+      }
+  }
+
+
+
   TimeStepper::Result
   TimeStepper::run(MechanicalSystem          &system,
                    TimeIntegrator            &integrator,
@@ -106,24 +186,47 @@ namespace pg
                           &f_int = state.f_int, &r_old = state.r_old;
     double &kinetic_constrained = state.kinetic_constrained;
 
-    // 1 at the constrained DoFs
+    // 1 at the constrained DoFs (the nodes held on a rigid wall change)
     LinearAlgebra::Vector constrained(owned, comm);
-    for (const auto i : owned)
-      if (system.homogeneous_constraints().is_constrained(i))
-        constrained(i) = 1.;
-    constrained.compress(VectorOperation::insert);
+    const auto            mark_constrained = [&]() {
+      constrained = 0;
+      for (const auto i : owned)
+        if (system.homogeneous_constraints().is_constrained(i))
+          constrained(i) = 1.;
+      constrained.compress(VectorOperation::insert);
+    };
+    mark_constrained();
+    const bool contact = !system.contact_state().empty();
 
     // a restart keeps the step of the run it continues
     if (!restarted)
-      choose_time_step(system, masses, explicit_, result);
-    const unsigned int n_steps = result.n_steps;
-    const double       dt      = result.time_step;
+      {
+        choose_time_step(system, masses, explicit_, result);
+        state.dt = result.time_step;
+      }
+    const unsigned int n_steps  = result.n_steps; // of the uniform steps
+    const double       dt0      = result.time_step;
+    const bool         adaptive = time.step_control == "adaptive";
+    const double       dt_min =
+      time.minimum_time_step > 0 ? time.minimum_time_step : 1e-3 * dt0;
+    const double dt_max =
+      time.maximum_time_step > 0 ? time.maximum_time_step : dt0;
+    double &dt = state.dt;
     {
       std::ostringstream line;
-      line << std::setprecision(4) << "  time step " << dt << ", " << n_steps
-           << " steps to t = " << T;
+      line << std::setprecision(4) << "  time step " << dt0 << ", ";
+      if (adaptive)
+        line << "adaptive from " << dt_min << " to " << dt_max;
+      else
+        line << n_steps << " steps";
+      line << " to t = " << T;
       out << line.str() << std::endl;
     }
+    const auto text = [](const double x) {
+      std::ostringstream s;
+      s << std::setprecision(6) << x;
+      return s.str();
+    };
 
     LinearAlgebra::Vector Ma(owned, comm), u_old(owned, comm), du(owned, comm),
       r_new(owned, comm);
@@ -166,6 +269,8 @@ namespace pg
            << ", W_int = " << energies.internal_work
            << ", W_ext = " << energies.external_work
            << ", W_supports = " << energies.support_work;
+      if (energies.plastic_work)
+        line << ", W_plastic = " << *energies.plastic_work;
       const double scale = std::max({std::abs(energies.kinetic),
                                      std::abs(energies.internal_work),
                                      std::abs(energies.initial_kinetic),
@@ -196,57 +301,144 @@ namespace pg
         energies.kinetic         = kinetic(kinetic_constrained);
         energies.initial_kinetic = energies.kinetic;
         reaction(r_old);
+        energies.plastic_work = system.plastic_work();
         operations.started(result);
         operations.output(0, 0., 0);
         progress(0, 0.);
         next_output = interval;
       }
 
-    for (unsigned int step = state.step + 1; step <= n_steps; ++step)
+    for (unsigned int step = state.step + 1;; ++step)
       {
-        const double t_new      = (step == n_steps ? T : step * dt);
-        unsigned int iterations = 0;
-        u_old                   = system.displacement();
-        const double          kinetic_constrained_old = kinetic_constrained;
+        if (state.uniform ? step > n_steps : t >= T)
+          break;
+        // the step h to t_new: while every step has had the first one's
+        // size, t = step * dt0 as always; afterwards shortened to end at
+        // the next output time ('adaptive') and at T
+        double h = dt0, t_new = (step == n_steps ? T : step * dt0);
+        if (!state.uniform)
+          {
+            h = std::min(dt, T - t);
+            if (adaptive && interval > 0 && next_output - t > 1e-9 * h)
+              h = std::min(h, next_output - t);
+            t_new = (T - (t + h) <= 1e-9 * h) ? T : t + h;
+          }
+        unsigned int iterations                       = 0;
+        u_old                                         = system.displacement();
+        double                kinetic_constrained_old = kinetic_constrained;
         LinearAlgebra::Vector f_ext_old(f_ext), f_int_old(f_int);
+        // what an adaptive step restores when it is redone (and the
+        // velocity that a rigid wall stops)
+        LinearAlgebra::Vector v_old, a_old;
+        std::vector<bool>     contact_old;
+        if (adaptive || (explicit_ && contact))
+          v_old = v;
+        if (adaptive)
+          {
+            a_old       = a;
+            contact_old = system.contact_state();
+          }
         // A step that fails (Newton, a NaN in an assembly, a load that
-        // cannot be evaluated) ends the run with the files of the steps
-        // before it written.
+        // cannot be evaluated) is redone with half the step ('adaptive')
+        // or ends the run with the files of the steps before it written.
         bool advanced = false;
         try
           {
             advanced =
-              integrator.step(system, t_new, dt, v, a, f_ext, iterations);
+              integrator.step(system, t_new, h, v, a, f_ext, iterations);
           }
         catch (const std::exception &exc)
           {
             integrator.last_failure = one_line(user_message(exc));
+          }
+        std::string why = integrator.last_failure;
+        if (!why.empty() && why.back() == '.')
+          why.pop_back();
+        if (!advanced && adaptive && 0.5 * h >= dt_min * (1. - 1e-12))
+          {
+            system.displacement() = u_old;
+            v                     = v_old;
+            a                     = a_old;
+            f_ext                 = f_ext_old;
+            system.set_contact_state(contact_old);
+            system.displacement_changed();
+            if (operations.step_rejected)
+              operations.step_rejected();
+            ++result.step_cuts;
+            dt               = 0.5 * h;
+            state.easy_steps = 0;
+            state.uniform    = false;
+            out << "  the step to t = " << text(t_new) << " failed"
+                << (why.empty() ? std::string() : " (" + why + ")")
+                << ": redone with dt = " << text(dt) << std::endl;
+            --step;
+            continue;
           }
         if (!advanced)
           {
             system.displacement() = u_old;
             system.displacement_changed();
             operations.give_up(step - 1, t);
-            std::string why = integrator.last_failure;
-            if (!why.empty() && why.back() != '.')
-              why += '.';
             AssertThrow(
               false,
               ExcMessage(
-                "The " + time.integrator +
-                " step to t = " + std::to_string(t_new) + " failed" +
-                (why.empty() ? std::string(". ") : ": " + why + " ") +
+                "The " + time.integrator + " step to t = " + text(t_new) +
+                " failed" +
+                (adaptive ? " with the smallest step, dt = " + text(h) +
+                              " ('Time/Minimum time step')" :
+                            std::string()) +
+                (why.empty() ? std::string(". ") : ": " + why + ". ") +
                 (explicit_ || why.find("NaN or inf") != std::string::npos ?
                    std::string() :
+                 adaptive ?
+                   "A smaller 'Minimum time step' in subsection 'Time', or a "
+                   "larger 'Maximum iterations' in subsection 'Newton', may "
+                   "get further. " :
                    "Reduce 'Time step' in subsection 'Time', or increase "
-                   "'Maximum iterations' in subsection 'Newton'. ") +
-                "The results up to t = " + std::to_string(t) + " are in '" +
+                   "'Maximum iterations' in subsection 'Newton' (or set "
+                   "'Time step control = adaptive'). ") +
+                "The results up to t = " + text(t) + " are in '" +
                 output_directory + "'."));
+          }
+        result.smallest_time_step = result.smallest_time_step == 0 ?
+                                      h :
+                                      std::min(result.smallest_time_step, h);
+        result.largest_time_step  = std::max(result.largest_time_step, h);
+        if (adaptive)
+          {
+            // grow after two consecutive easy steps
+            if (iterations > time.easy_step_iterations)
+              state.easy_steps = 0;
+            else if (++state.easy_steps >= 2)
+              {
+                state.easy_steps = 0;
+                const double grown =
+                  std::min(dt_max, time.step_growth_factor * dt);
+                if (grown > dt * (1. + 1e-12))
+                  {
+                    dt            = grown;
+                    state.uniform = false;
+                  }
+              }
           }
         t = t_new;
         result.newton_iterations += iterations;
         operations.step_done(step, iterations);
 
+        // A node that the wall held in this step lost its kinetic energy
+        // to the wall (leapfrog: it stops; the source's inelastic contact):
+        // the support work of the constrained DoFs' kinetic energy counts
+        // the held set after the step at the velocities before it.
+        if (explicit_ && contact)
+          {
+            mark_constrained();
+            double e_constrained = 0;
+            for (unsigned int i = 0; i < v_old.locally_owned_size(); ++i)
+              e_constrained += constrained.begin()[i] * 0.5 *
+                               masses.lumped.begin()[i] * v_old.begin()[i] *
+                               v_old.begin()[i];
+            kinetic_constrained_old = Utilities::MPI::sum(e_constrained, comm);
+          }
         // energies (trapezoidal rule)
         du = system.displacement();
         du -= u_old;
@@ -266,27 +458,31 @@ namespace pg
           {
             system.displacement() = u_old;
             system.displacement_changed();
-            operations.give_up(step - 1, t - dt);
+            operations.give_up(step - 1, t - h);
             AssertThrow(false,
-                        ExcMessage("The motion became unbounded at t = " +
-                                   std::to_string(t) +
-                                   ": reduce 'Time step' in subsection "
-                                   "'Time'. The results up to t = " +
-                                   std::to_string(t - dt) + " are in '" +
-                                   output_directory + "'."));
+                        ExcMessage(
+                          "The motion became unbounded at t = " + text(t) +
+                          ": reduce 'Time step' in subsection "
+                          "'Time'. The results up to t = " +
+                          text(t - h) + " are in '" + output_directory + "'."));
           }
 
-        if (step == n_steps || interval == 0. || t >= next_output - 1e-9 * dt)
+        if (t >= T || interval == 0. || t >= next_output - 1e-9 * h)
           {
-            while (interval > 0. && next_output <= t + 1e-9 * dt)
+            while (interval > 0. && next_output <= t + 1e-9 * h)
               next_output += interval;
+            energies.plastic_work = system.plastic_work();
             operations.output(step, t, iterations);
             progress(step, t);
           }
         state.step = step;
+        if (explicit_ && time.stable_step_update_interval > 0 &&
+            step % time.stable_step_update_interval == 0 && t < T)
+          update_stable_step(system, masses, state, dt_min, operations);
         if (operations.step_accepted)
           operations.step_accepted(state);
       }
+    result.n_steps    = state.step;
     result.final_time = t;
     return result;
   }

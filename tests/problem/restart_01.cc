@@ -13,8 +13,9 @@
 // SIGTERM (recorded on rank 0 only) after step 1; leapfrog (VCBCPBG Unl on
 // the Ganzenmueller patch, 66 steps) from the checkpoint of step 50
 // (interval 25); Newmark (VCBCPPG V3sn Unl, 10 steps) stopped by a SIGINT
-// after step 1. Then the errors of a restart without a checkpoint and of
-// one with other parameters.
+// after step 1; leapfrog with a block bouncing on a rigid wall (the active
+// set is in the checkpoint) from step 20. Then the errors of a restart without
+// a checkpoint and of one with other parameters.
 
 #include <pg/base/exceptions.h>
 #include <pg/base/interruption.h>
@@ -211,6 +212,22 @@ main(int argc, char **argv)
             "  set Time step = 0.1\n  set End time = 1\n"
             "  set Output interval = 0.5\nend\n";
 
+  // a block that falls onto a rigid wall and bounces (100 steps): the
+  // checkpoint of step 90 is written while its bottom nodes are held
+  const std::string wall =
+    "set Dimension = 2\n"
+    "subsection Geometry\n  set Upper corner = 1, 1\n"
+    "  set Subdivisions = 4, 4\nend\n"
+    "subsection Material\n  set Model = linear elastic\n"
+    "  set Young's modulus = 1\n  set Poisson's ratio = 0.3\n"
+    "  set Density = 1\nend\n"
+    "subsection Boundary conditions\n  subsection Rigid wall\n"
+    "    set Point = 0, -0.01\n    set Normal = 0, 1\n  end\nend\n"
+    "subsection Time\n  set Integrator = leapfrog\n  set End time = 2\n"
+    "  set Time step = 0.02\n"
+    "  set Output interval = 0.1\n  subsection Initial velocity\n"
+    "    set Function expression = 0; -0.1\n  end\nend\n";
+
   deallog << "static, from the checkpoint of step 4" << std::endl;
   const pg::RunSummary cook_full = from_checkpoint("static", cook, 2, screen);
 
@@ -237,6 +254,10 @@ main(int argc, char **argv)
   compare("newmark",
           newmark_full,
           run_problem<2>(newmark + output("newmark_restart", 0), screen, true));
+
+  deallog << "leapfrog with a rigid wall, from the checkpoint of step 90"
+          << std::endl;
+  from_checkpoint("wall", wall, 30, screen);
 
   deallog << "restart without a checkpoint" << std::endl;
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)

@@ -55,6 +55,18 @@ namespace pg
     std::vector<std::vector<unsigned int>>
     evaluation_points() const;
 
+    /**
+     * sum_q w_q f(s_q) over the evaluation points q of every group on this
+     * rank, s_q being the first @p n_material values of q's committed
+     * state (the material's part) and w_q the groups'
+     * evaluation_point_weights(): the integral of a function of the
+     * material state over this rank's part of the body.
+     */
+    double
+    integrate_committed_state(
+      const std::function<double(const ArrayView<const double> &)> &f,
+      const unsigned int n_material) const;
+
     /** The couplings of all groups' elements. */
     void
     add_sparsity(DynamicSparsityPattern &sparsity) const;

@@ -94,6 +94,25 @@ namespace pg
     unsigned int
     n_active() const;
 
+    /** Which nodes are held (in the order of the wall's nodes). */
+    const std::vector<bool> &
+    active_set() const
+    {
+      return active;
+    }
+
+    /**
+     * Hold the nodes of @p active_set, as active_set() returned it (a step
+     * cut restores the set of the last accepted step); the caller rebuilds
+     * the constraints.
+     */
+    void
+    set_active_set(const std::vector<bool> &active_set)
+    {
+      AssertDimension(active_set.size(), active.size());
+      active = active_set;
+    }
+
     /** min n . (X + u - p) over all vertices, @p u ghosted (collective). */
     double
     min_gap(const LinearAlgebra::Vector &u) const;

@@ -218,6 +218,18 @@ namespace pg
     virtual unsigned int
     n_evaluation_points(const unsigned int e) const = 0;
 
+    /**
+     * The reference volume (volume units) each evaluation point stands for,
+     * element after element in the order of the point history: the
+     * weights of the elements' quadratures (JxW of a cell's Gauss points,
+     * w_q of a family's table), so that sum_q w_q g(state_q) integrates a
+     * function of the material state over this rank's part of the body
+     * (e.g. the plastic work, Material::plastic_work_density()). Empty if
+     * the points are no quadrature of the body (CPD interactions).
+     */
+    virtual std::vector<double>
+    evaluation_point_weights() const;
+
     virtual std::unique_ptr<GroupScratch>
     create_scratch() const = 0;
 

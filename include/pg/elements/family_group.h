@@ -164,6 +164,10 @@ namespace pg
     unsigned int
     n_evaluation_points(const unsigned int e) const override;
 
+    /** The weights of the tables whose points carry the history. */
+    std::vector<double>
+    evaluation_point_weights() const override;
+
     std::unique_ptr<GroupScratch>
     create_scratch() const override;
 
@@ -175,6 +179,10 @@ namespace pg
              LocalSystem                 &local) const override;
 
   private:
+    /** The tables whose points carry the history, by element. */
+    const std::vector<QuadratureTable<dim>> &
+    evaluation_tables() const;
+
     const std::vector<QuadratureTable<dim>> &family_tables;
     U1Stabilisation<dim>                     stabilisation;
     const Materials::Material<dim>          &material;

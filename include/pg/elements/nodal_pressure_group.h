@@ -36,6 +36,9 @@ namespace pg
     unsigned int
     n_evaluation_points(const unsigned int e) const override;
 
+    std::vector<double>
+    evaluation_point_weights() const override;
+
     std::unique_ptr<GroupScratch>
     create_scratch() const override;
 
@@ -92,6 +95,9 @@ namespace pg
 
     unsigned int
     n_evaluation_points(const unsigned int e) const override;
+
+    std::vector<double>
+    evaluation_point_weights() const override;
 
     std::unique_ptr<GroupScratch>
     create_scratch() const override;

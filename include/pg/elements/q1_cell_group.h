@@ -53,6 +53,10 @@ namespace pg
     unsigned int
     n_evaluation_points(const unsigned int e) const override;
 
+    /** JxW of every cell's Gauss points. */
+    std::vector<double>
+    evaluation_point_weights() const override;
+
     std::unique_ptr<GroupScratch>
     create_scratch() const override;
 

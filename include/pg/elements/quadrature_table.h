@@ -57,6 +57,24 @@ namespace pg
   };
 
   /**
+   * The weights of @p tables[0], ..., @p tables[n - 1], one table after the
+   * other (ElementGroup::evaluation_point_weights()).
+   */
+  template <int dim>
+  std::vector<double>
+  concatenated_weights(const std::vector<QuadratureTable<dim>> &tables,
+                       const unsigned int                       n)
+  {
+    AssertIndexRange(n, tables.size() + 1);
+    std::vector<double> weights;
+    for (unsigned int e = 0; e < n; ++e)
+      weights.insert(weights.end(),
+                     tables[e].weights.begin(),
+                     tables[e].weights.end());
+    return weights;
+  }
+
+  /**
    * The one kernel (pg-methods.md section 14.1): for the local nodal
    * positions relative to node 0, @p y^b = X^b - X^0 + u^b (using relative
    * positions keeps F accurate; the trial vectors sum to zero, so F does

@@ -172,6 +172,20 @@ namespace pg
       void
       state_outputs(const ArrayView<const double> &state,
                     const ArrayView<double>       &values) const final;
+
+      /** True. */
+      bool
+      is_dissipative() const final;
+
+      /**
+       * int_0^alpha sigma_y(a) da = sigma_y0 alpha + H alpha^2 / 2 +
+       * (sigma_y_inf - sigma_y0) (alpha - (1 - exp(-delta alpha)) / delta)
+       * (eq. 2.49 integrated; the last term is 0 for delta = 0): the
+       * dissipation tau : d_p = sigma_y(alpha) d alpha / dt of the flow
+       * rule on the yield surface, integrated over the history.
+       */
+      double
+      plastic_work_density(const ArrayView<const double> &state) const final;
       /** @} */
 
       /** @name Stateless: one step from the initial state */

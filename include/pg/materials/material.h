@@ -174,6 +174,29 @@ namespace pg
         (void)values;
         AssertDimension(values.size(), 0);
       }
+
+      /**
+       * Whether the material dissipates energy (plastic_work_density() is
+       * meaningful); false by default.
+       */
+      virtual bool
+      is_dissipative() const
+      {
+        return false;
+      }
+
+      /**
+       * The plastic work done per reference volume up to @p state (energy
+       * per volume): the integral of tau : d_p over the history, which
+       * for J2 plasticity is int_0^alpha sigma_y(a) da. The dynamic energy
+       * account reports its integral over the body. Default: 0.
+       */
+      virtual double
+      plastic_work_density(const ArrayView<const double> &state) const
+      {
+        (void)state;
+        return 0.;
+      }
       /** @} */
     };
 

@@ -213,10 +213,20 @@ namespace pg
     {
       std::string integrator;
       /** dt used, and the stable estimate 2 / omega_max of leapfrog. */
-      double              time_step = 0, stable_time_step = 0;
-      unsigned int        n_steps = 0;
+      double time_step = 0, stable_time_step = 0;
+      /** The smallest and largest accepted steps, the time reached. */
+      double       smallest_time_step = 0, largest_time_step = 0;
+      double       final_time = 0;
+      unsigned int n_steps    = 0;
+      /** Failed steps redone with half the step ('adaptive'). */
+      unsigned int        step_cuts = 0;
       std::vector<double> time, kinetic, internal_work, external_work,
         support_work, balance;
+      /**
+       * The plastic work (TimeIntegration::Energies::plastic_work); empty
+       * for a material that does not dissipate.
+       */
+      std::vector<double> plastic_work;
       /**
        * The disorder indicator of the particles (TimeIntegration::
        * local_fit_deviation relative to the RMS of the initial

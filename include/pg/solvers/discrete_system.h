@@ -214,6 +214,20 @@ namespace pg
     update_contact(const LinearAlgebra::Vector &reaction,
                    const unsigned int           round) override;
 
+    /** The rigid wall's active set (empty without a wall). */
+    std::vector<bool>
+    contact_state() const override
+    {
+      return rigid_wall ? rigid_wall->active_set() : std::vector<bool>();
+    }
+
+    void
+    set_contact_state(const std::vector<bool> &state) override;
+
+    /** The integral of the material's plastic_work_density(). */
+    std::optional<double>
+    plastic_work() const override;
+
     const AffineConstraints<double> &
     homogeneous_constraints() const override
     {
@@ -429,6 +443,13 @@ namespace pg
      * every accepted (sub)step, reverted after a cut.
      */
     QuadraturePointHistory history;
+    /**
+     * The initial state of history's points (empty for a stateless
+     * material and kernel): the external force is the residual at u = 0
+     * from this state, where the internal force is zero (from the
+     * committed state a plastic body has stresses at u = 0).
+     */
+    QuadraturePointHistory initial_history;
 
     /** The first failure of the last assembly on this rank (or empty). */
     std::string failure;

@@ -8,7 +8,9 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace pg
 {
@@ -121,6 +123,17 @@ namespace pg
     newton_operations() = 0;
 
     /**
+     * The plastic work of the committed state, integrated over the body
+     * (energy units; collective), or nothing if the material does not
+     * dissipate (Materials::Material::plastic_work_density()).
+     */
+    virtual std::optional<double>
+    plastic_work() const
+    {
+      return {};
+    }
+
+    /**
      * Zero the entries of @p v (a velocity or acceleration) at the DoFs
      * held on a rigid wall (none by default).
      */
@@ -128,6 +141,24 @@ namespace pg
     hold_at_wall(LinearAlgebra::Vector &v) const
     {
       (void)v;
+    }
+
+    /**
+     * The state of the contact conditions (the rigid wall's active set;
+     * empty by default), to be restored by set_contact_state() when a
+     * step is redone.
+     */
+    virtual std::vector<bool>
+    contact_state() const
+    {
+      return {};
+    }
+
+    /** Restore what contact_state() returned, constraints included. */
+    virtual void
+    set_contact_state(const std::vector<bool> &state)
+    {
+      (void)state;
     }
 
     /**

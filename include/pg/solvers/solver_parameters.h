@@ -104,6 +104,17 @@ namespace pg
       double output_interval;
       double beta;
       double gamma;
+      /** fixed | adaptive (Newmark: cut on failure, grow after easy steps) */
+      std::string step_control;
+      /** 0: 1e-3 times the initial step. */
+      double minimum_time_step;
+      /** 0: the initial step. */
+      double maximum_time_step;
+      /** A step is easy if Newton converged in at most so many updates. */
+      unsigned int easy_step_iterations;
+      double       step_growth_factor;
+      /** Leapfrog: re-estimate 2 / omega_max every so many steps (0: never). */
+      unsigned int stable_step_update_interval;
       /** newmark | last converged state: where Newton starts a step */
       std::string newmark_predictor;
 

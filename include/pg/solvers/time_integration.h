@@ -7,6 +7,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <optional>
 #include <vector>
 
 namespace pg
@@ -55,6 +56,14 @@ namespace pg
       double external_work = 0;
       /** Work of the reactions at the constrained DoFs. */
       double support_work = 0;
+      /**
+       * The plastic work, the integral of the committed state's
+       * Material::plastic_work_density() over the body (not the trapezoidal
+       * rule; part of internal_work, which also holds the stored elastic
+       * energy); nothing for a material that does not dissipate. Updated
+       * at the output times.
+       */
+      std::optional<double> plastic_work;
 
       /**
        * E_kin - E_kin(0) + W_int - W_ext - W_supports: zero for exact

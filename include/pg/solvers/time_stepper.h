@@ -16,8 +16,10 @@ namespace pg
 {
   /**
    * The time loop of 'Time/Integrator' leapfrog or newmark: the stable step
-   * 2 / omega_max of leapfrog from the tangent of the initial state, the
-   * step size, the initial acceleration, the steps of the integrator and
+   * 2 / omega_max of leapfrog from the tangent of the initial state (and
+   * again every 'Stable step update interval' steps), the step size (cut
+   * and grown with 'Time step control = adaptive'), the initial
+   * acceleration, the steps of the integrator and
    * the energy account (kinetic energy, the work of the internal forces,
    * of the external loads and of the supports, each by the trapezoidal
    * rule), with a progress line at every output time.
@@ -28,8 +30,15 @@ namespace pg
     /** What the loop found out, for the summary. */
     struct Result
     {
+      /**
+       * The first step, the stable leapfrog step (the last estimate), and
+       * the smallest and largest accepted steps.
+       */
       double       time_step = 0, stable_time_step = 0;
+      double       smallest_time_step = 0, largest_time_step = 0;
       unsigned int n_steps = 0, newton_iterations = 0;
+      /** Failed steps redone with half the step ('adaptive'). */
+      unsigned int step_cuts  = 0;
       double       final_time = 0;
     };
 
@@ -42,10 +51,18 @@ namespace pg
      */
     struct State
     {
-      Result                result;
-      unsigned int          step = 0;
-      double                t = 0, next_output = 0;
-      double                kinetic_constrained = 0;
+      Result       result;
+      unsigned int step = 0;
+      double       t = 0, next_output = 0;
+      double       kinetic_constrained = 0;
+      /**
+       * The size of the next step, the easy steps since the last growth
+       * ('adaptive'), and whether every step so far had the first one's
+       * size (then t = step * dt, bit for bit as before).
+       */
+      double                dt         = 0;
+      unsigned int          easy_steps = 0;
+      bool                  uniform    = true;
       LinearAlgebra::Vector a, f_ext, f_int, r_old;
 
       /** Size the vectors for the owned DoFs @p owned. */
@@ -60,6 +77,12 @@ namespace pg
         archive &result.time_step &result.stable_time_step &result
           .n_steps &result.newton_iterations &result
           .final_time &step &t &next_output  &kinetic_constrained;
+        archive                              &result.smallest_time_step;
+        archive                              &result.largest_time_step;
+        archive                              &result.step_cuts;
+        archive                              &dt;
+        archive                              &easy_steps;
+        archive                              &uniform;
       }
     };
 
@@ -81,6 +104,11 @@ namespace pg
        * computed up to step @p last_step at time @p t.
        */
       std::function<void(const unsigned int last_step, const double t)> give_up;
+      /**
+       * A step failed and is redone with a smaller one ('adaptive'): the
+       * trial point history goes back to the committed one.
+       */
+      std::function<void()> step_rejected;
       /** After every step and its output: the state (for a checkpoint). */
       std::function<void(const State &)> step_accepted;
     };
@@ -110,6 +138,27 @@ namespace pg
         const bool                 restarted = false) const;
 
   private:
+    /**
+     * 2 / omega_max of leapfrog from the tangent of the current state
+     * (omega_max^2 the largest eigenvalue of M^-1 K, power iteration).
+     */
+    double
+    stable_step(MechanicalSystem &system, const MassMatrices &masses) const;
+
+    /**
+     * 'Stable step update interval': 2 / omega_max again at the current
+     * state; an automatic step becomes 'Safety factor' times it (reported
+     * if it changes by more than 1 %), a fixed 'Time step' above it, or an
+     * automatic one below @p dt_min, ends the run (operations.give_up(),
+     * then an exception).
+     */
+    void
+    update_stable_step(MechanicalSystem   &system,
+                       const MassMatrices &masses,
+                       State              &state,
+                       const double        dt_min,
+                       const Operations   &operations) const;
+
     /**
      * The stable step 2 / omega_max of leapfrog from the tangent of the
      * current (initial) state, checked against 'Time step' for leapfrog,
