@@ -21,6 +21,8 @@
 #   OUT=<file>          results file (default doc/benchmarks/dynamic_torsion/results_N<N>.txt)
 #   APPEND=1            append to the results instead of starting them
 #   KEEP=1              keep the work directory (VTU of every run) and print it
+#   FIXED=1             fixed 1 degree steps, a run stops at the first failed
+#                       step (how dynamic_torsion.md was measured)
 # Usage (from the repository root, with a Release build):
 #   sh doc/benchmarks/dynamic_torsion.sh build-release/applications/pg_solve/pg_solve [N]
 set -e
@@ -36,11 +38,13 @@ DIR=doc/benchmarks/dynamic_torsion
 OUT=${OUT:-$DIR/results_N$N.txt}
 WORK=$(mktemp -d)
 mkdir -p "$DIR"
-# adaptive steps where pg_solve has them (1 degree, cut to 0.1, grown to 5);
-# otherwise the fixed 1 degree steps of the prm, and a run stops at the
-# first step that fails
+# adaptive steps (1 degree, cut to 0.1, grown to 5), or with FIXED=1 (or a
+# pg_solve without them) fixed 1 degree steps; a run stops at the first
+# step that fails
 ADAPTIVE=""
-if "$PG_SOLVE" --print-parameters 2>/dev/null | grep -q "Time step control"; then
+if [ -n "$FIXED" ]; then
+  ADAPTIVE="  set Time step control = fixed"
+elif "$PG_SOLVE" --print-parameters 2>/dev/null | grep -q "Time step control"; then
   ADAPTIVE="  set Time step control = adaptive
   set Minimum time step = 2.7777777777777776e-06
   set Maximum time step = 1.3888888888888888e-04"
