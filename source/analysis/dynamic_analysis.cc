@@ -7,6 +7,7 @@
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 
+#include <iomanip>
 #include <memory>
 
 namespace pg
@@ -259,6 +260,11 @@ namespace pg
         access.pcout << "  total Newton iterations: "
                      << summary.newton_iterations << std::endl;
       access.write_files(n_steps, t);
+      // a material with history: the largest committed value of each state
+      // output (as "max_<name>" of summary.json, filled by write_files())
+      for (const auto &[name, value] : summary.state_output_maxima)
+        access.pcout << "  max " << name << ": " << std::setprecision(4)
+                     << value << std::setprecision(6) << std::endl;
     }
 
 

@@ -11,6 +11,7 @@ namespace pg
     : masses(masses)
     , beta(time.beta)
     , gamma(time.gamma)
+    , start_at_last_state(time.newmark_predictor == "last converged state")
     , newton(newton)
     , out(out)
   {}
@@ -67,11 +68,14 @@ namespace pg
     const double c0 = 1. / (beta * dt * dt);
     system.set_time(t_new);
     system.external_force(f_ext);
-    // the predictor u~ = u + dt v + dt^2 (1/2 - beta) a, i.e. a_new = 0
+    // the predictor u~ = u + dt v + dt^2 (1/2 - beta) a, i.e. a_new = 0;
+    // Newton starts there or at the last converged u ('Newmark
+    // predictor'), with the new Dirichlet values either way
     LinearAlgebra::Vector &u = system.displacement();
     LinearAlgebra::Vector  u_tilde(u);
     u_tilde.add(dt, v, dt * dt * (0.5 - beta), a);
-    u = u_tilde;
+    if (!start_at_last_state)
+      u = u_tilde;
     system.apply_dirichlet_values();
     system.displacement_changed();
 

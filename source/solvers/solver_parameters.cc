@@ -435,6 +435,19 @@ namespace pg
           "the cells along the axis); each estimate costs one tangent "
           "assembly and a few hundred products with it. 0: only the "
           "initial estimate.");
+        prm.declare_entry(
+          "Newmark predictor",
+          "newmark",
+          Patterns::Selection("newmark|last converged state"),
+          "Where Newton's method starts a Newmark step. 'newmark': at "
+          "u + dt v + dt^2 (1/2 - beta) a (the new acceleration 0). "
+          "'last converged state': at the displacement of the last step, "
+          "as a quasi-static step with 'Loading/Predictor = boundary values' "
+          "does (only the nodes with Dirichlet values move). Both with the "
+          "new Dirichlet values on their DoFs; the converged step is the "
+          "same, the number of Newton iterations and the largest step that "
+          "converges are not. 'Loading/Predictor' applies to quasi-static "
+          "load steps only.");
       }
       prm.leave_subsection();
     }
@@ -460,6 +473,7 @@ namespace pg
         step_growth_factor   = prm.get_double("Step growth factor");
         stable_step_update_interval =
           prm.get_integer("Stable step update interval");
+        newmark_predictor = prm.get("Newmark predictor");
       }
       prm.leave_subsection();
 

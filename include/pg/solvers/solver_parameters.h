@@ -115,6 +115,8 @@ namespace pg
       double       step_growth_factor;
       /** Leapfrog: re-estimate 2 / omega_max every so many steps (0: never). */
       unsigned int stable_step_update_interval;
+      /** newmark | last converged state: where Newton starts a step */
+      std::string newmark_predictor;
 
       /** Is an integrator selected (not quasi-static load stepping)? */
       bool

@@ -81,7 +81,10 @@ namespace pg
   /**
    * 'Time/Integrator = newmark': implicit Newmark (beta, gamma), Newton's
    * method (NewtonSolver) on M a(u) + f_int(u) - f_ext = 0 with the
-   * effective tangent K + M / (beta dt^2).
+   * effective tangent K + M / (beta dt^2). Newton starts each step at the
+   * Newmark predictor u~ = u + dt v + dt^2 (1/2 - beta) a (a_new = 0) or,
+   * with 'Newmark predictor = last converged state', at u (the converged
+   * state of the last step); both with the new Dirichlet values.
    */
   class Newmark : public TimeIntegrator
   {
@@ -108,8 +111,10 @@ namespace pg
          unsigned int          &iterations) override;
 
   private:
-    const MassMatrices       &masses;
-    const double              beta, gamma;
+    const MassMatrices &masses;
+    const double        beta, gamma;
+    /** 'Newmark predictor = last converged state' */
+    const bool                start_at_last_state;
     const Parameters::Newton &newton;
     const ConditionalOStream &out;
   };
